@@ -1,0 +1,22 @@
+#pragma once
+// Pinhole camera. World-space values are kept in double precision; the renderer converts them
+// to the scene-local frame (world − Scene::origin) before going to float, so a scene far from
+// the world origin renders exactly like one centred on it.
+#include <glm/glm.hpp>
+#include <string>
+
+namespace vct {
+
+struct Camera {
+    std::string name;                 // preset name ("default", glTF camera name, …)
+    glm::dvec3 eye{0.0, 0.0, 5.0};
+    glm::dvec3 target{0.0};
+    glm::dvec3 up{0.0, 1.0, 0.0};
+    double fovYDeg = 45.0;            // vertical field of view
+};
+
+// Throws vct::Error when eye/target/up/fov are non-finite, eye == target, up ∥ view direction
+// or fov outside (0, 180).
+void validateCamera(const Camera& camera);
+
+}  // namespace vct

@@ -1,0 +1,47 @@
+#pragma once
+// Lights in physical units (DESIGN 5.3). The reference path tracer evaluates exactly the same
+// functions, so engine and reference agree on what a light delivers.
+//
+//   Directional (sun): `irradiance` E in W/m² on a surface perpendicular to the light.
+//       A Lambertian surface of albedo ρ at angle θ to the light reflects L = ρ/π · E · cosθ.
+//   Spot: `intensity` I in W/sr along its axis, attenuated by 1/d² and by spotFalloff():
+//       E(point) = I · spotFalloff(cos α) · cosθ / d²,   α = angle between axis and the point.
+//
+// `direction` is always the direction in which light travels (from the light into the scene):
+// a sun overhead has direction (0,-1,0); a spot pointing at the floor too.
+#include <glm/glm.hpp>
+#include <string>
+
+namespace vct {
+
+enum class LightType { Directional, Spot };
+
+struct Light {
+    LightType type = LightType::Directional;
+    glm::dvec3 position{0.0};             // world space; spot only
+    glm::dvec3 direction{0.0, -1.0, 0.0};  // unit, direction of travel
+    glm::dvec3 color{1.0};                // linear RGB tint multiplying the scalar quantity
+    double irradiance = 1.0;              // directional: W/m²
+    double intensity = 1.0;               // spot: W/sr
+    double innerAngleDeg = 30.0;          // spot: full intensity inside this half-angle
+    double outerAngleDeg = 45.0;          // spot: zero outside this half-angle
+};
+
+// Angular falloff of a spot light. With c = cos α, ci = cos(inner), co = cos(outer):
+//   t = clamp((c − co) / (ci − co), 0, 1),   falloff = t² (3 − 2t)   (smoothstep in cos α).
+// The GLSL twin lives in shaders/lights.glsl; keep the two identical.
+inline double spotFalloff(double cosAngle, double innerAngleDeg, double outerAngleDeg) {
+    const double ci = std::cos(glm::radians(innerAngleDeg));
+    const double co = std::cos(glm::radians(outerAngleDeg));
+    if (ci - co <= 0.0) return cosAngle >= co ? 1.0 : 0.0;
+    const double t = glm::clamp((cosAngle - co) / (ci - co), 0.0, 1.0);
+    return t * t * (3.0 - 2.0 * t);
+}
+
+// Throws vct::Error naming the light and the bad parameter (non-finite, non-positive, zero
+// direction, inner > outer, outer ≥ 90°).
+void validateLight(const Light& light, const std::string& what);
+
+std::string describe(const Light& light);
+
+}  // namespace vct
