@@ -1,0 +1,15 @@
+#pragma once
+// The subcommands of `vct`. Each registers its options on the app and returns the function that
+// runs it once parsing succeeded.
+#include <functional>
+
+#include <CLI/CLI.hpp>
+
+namespace vct::cli {
+
+using Run = std::function<void()>;
+
+Run addRenderCommand(CLI::App& app);
+Run addInfoCommand(CLI::App& app);
+
+}  // namespace vct::cli

@@ -1,0 +1,99 @@
+// `vct render`: one frame of a scene, headless, to PNG (+ linear HDR, AOVs, timings).
+#include <cstdio>
+#include <filesystem>
+
+#include "cli/commands.hpp"
+#include "cli/scene_options.hpp"
+#include "core/error.hpp"
+#include "core/image.hpp"
+#include "core/log.hpp"
+#include "gl/context.hpp"
+#include "pipeline/renderer.hpp"
+#include "pipeline/timings_report.hpp"
+
+namespace vct::cli {
+namespace {
+
+struct RenderOptions {
+    SceneOptions scene;
+    std::string out = "vct.png";
+    std::string hdrOut;
+    std::string timingsOut;
+    std::string backend = "osmesa";
+    std::string aov = "final";
+    std::string toneCurve = "aces";
+    std::optional<double> exposureEV;
+    int width = 1280;
+    int height = 720;
+    int lightViewResolution = 2048;
+    int pcfRadius = 1;
+    int frames = 1;
+};
+
+void run(const RenderOptions& o) {
+    if (o.frames < 1 || o.frames > 100000) fail("--frames ", o.frames, " is out of range; use 1..100000");
+    // Check what the user can get wrong before the expensive steps.
+    ensureWritable(o.out);
+    if (!o.hdrOut.empty()) ensureWritable(o.hdrOut);
+    if (!o.timingsOut.empty()) ensureWritable(o.timingsOut);
+    const auto backend = gl::parseBackend(o.backend);
+    RenderSettings settings;
+    settings.width = o.width;
+    settings.height = o.height;
+    settings.lightViewResolution = o.lightViewResolution;
+    settings.pcfRadius = o.pcfRadius;
+    settings.display.aov = parseAov(o.aov);
+    settings.display.toneCurve = parseToneCurve(o.toneCurve);
+    if (o.width < 1 || o.height < 1 || o.width > 16384 || o.height > 16384)
+        fail("image size ", o.width, "x", o.height, " is out of range; --width and --height must be within 1..16384");
+
+    const Scene scene = loadSceneFromOptions(o.scene);
+    const Camera camera = cameraFromOptions(o.scene, scene);
+    settings.display.exposureEV = o.exposureEV.value_or(scene.exposureEV);
+    if (!std::isfinite(settings.display.exposureEV)) fail("--exposure must be a finite number of stops");
+
+    auto context = gl::createContext(backend);
+    Renderer renderer(scene, settings);
+    for (int frame = 0; frame < o.frames; ++frame) renderer.renderFrame(camera);
+
+    const ImageF hdr = renderer.readHdr();
+    std::size_t nonFinite = 0;
+    for (float v : hdr.rgba) nonFinite += !std::isfinite(v);
+    if (nonFinite) fail("the rendered image has ", nonFinite, " non-finite values (an engine bug: please report it)");
+    writePng(o.out, renderer.readLdr());
+    if (!o.hdrOut.empty()) writeHdrImage(o.hdrOut, hdr);
+
+    TimingsReport report{context->info(), o.width, o.height, {}, renderer.memory()};
+    if (auto timings = renderer.timer().waitForLatest()) report.timings = *timings;
+    if (logLevel() >= LogLevel::Info) std::printf("%s", formatTimingsTable(report).c_str());
+    if (!o.timingsOut.empty()) writeTimingsJson(o.timingsOut, report);
+    logInfo(concat("wrote ", o.out, o.hdrOut.empty() ? "" : " and " + o.hdrOut));
+}
+
+}  // namespace
+
+Run addRenderCommand(CLI::App& app) {
+    auto options = std::make_shared<RenderOptions>();
+    RenderOptions& o = *options;
+    CLI::App* command = app.add_subcommand("render", "render one frame headless to a PNG (and HDR/AOV/timings)");
+    addSceneOptions(*command, o.scene, true);
+    command->add_option("--out,-o", o.out, "output PNG (tone-mapped sRGB)")->capture_default_str();
+    command->add_option("--hdr-out", o.hdrOut, "linear float output: .pfm or .exr");
+    command->add_option("--timings", o.timingsOut, "per-pass GPU/CPU timings as JSON (schema in README)");
+    command->add_option("--backend", o.backend, "osmesa (offscreen CPU), egl (headless GPU) or glfw (hidden window)")
+        ->capture_default_str();
+    command->add_option("--width", o.width, "image width in pixels")->capture_default_str();
+    command->add_option("--height", o.height, "image height in pixels")->capture_default_str();
+    command->add_option("--aov", o.aov, "output buffer: final, direct, albedo, normal, depth")->capture_default_str();
+    command->add_option("--exposure", o.exposureEV, "exposure in stops (EV); default: the scene's");
+    command->add_option("--tonemap", o.toneCurve, "tone curve: aces, reinhard, clamp")->capture_default_str();
+    command->add_option("--light-view-res", o.lightViewResolution, "light-view (shadow) map texels per side")
+        ->capture_default_str();
+    command->add_option("--pcf-radius", o.pcfRadius, "shadow filter radius in texels (0 = one tap)")
+        ->capture_default_str();
+    command->add_option("--frames", o.frames, "render this many frames; timings are the last frame's")
+        ->capture_default_str();
+    return [options] { run(*options); };
+}
+
+}  // namespace vct::cli

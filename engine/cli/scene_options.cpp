@@ -1,0 +1,99 @@
+#include "cli/scene_options.hpp"
+
+#include "core/error.hpp"
+#include "scene/scene_loader.hpp"
+
+namespace vct::cli {
+namespace {
+
+glm::dvec3 toVec3(const std::vector<double>& values, const char* option) {
+    if (values.size() != 3) fail(option, " needs three comma-separated numbers, e.g. ", option, " 0,1,0");
+    return {values[0], values[1], values[2]};
+}
+
+void addVector(CLI::App& command, const std::string& name, std::vector<double>& target, const std::string& help) {
+    command.add_option(name, target, help)->delimiter(',')->type_name("X,Y,Z");
+}
+
+const Light* firstOfType(const std::vector<Light>& lights, LightType type) {
+    for (const auto& light : lights)
+        if (light.type == type) return &light;
+    return nullptr;
+}
+
+}  // namespace
+
+void addSceneOptions(CLI::App& command, SceneOptions& o, bool withCameraAndLights) {
+    command.add_option("--scene", o.scene, "cornell (built in), sponza (asset search path) or a model file path")
+        ->capture_default_str();
+    command.add_flag("--sanitize", o.sanitize,
+                     "drop triangles with non-finite vertex positions instead of refusing the model");
+    if (!withCameraAndLights) return;
+    command.add_option("--camera", o.cameraPreset, "camera preset name (the scene's presets are listed by vct info)");
+    addVector(command, "--eye", o.eye, "camera position (world units)");
+    addVector(command, "--target", o.target, "point the camera looks at");
+    addVector(command, "--up", o.up, "camera up vector (default 0,1,0)");
+    command.add_option("--fov", o.fovDeg, "vertical field of view in degrees");
+    addVector(command, "--sun-dir", o.sunDirection, "sun: direction the light travels, e.g. 0.3,-1,0.2");
+    command.add_option("--sun-irradiance", o.sunIrradiance, "sun: irradiance E in W/m² perpendicular to the light");
+    addVector(command, "--spot-pos", o.spotPosition, "spot light position");
+    addVector(command, "--spot-dir", o.spotDirection, "spot light axis (direction the light travels)");
+    command.add_option("--spot-intensity", o.spotIntensity, "spot: intensity I in W/sr on its axis");
+    command.add_option("--spot-angles", o.spotAngles, "spot: inner,outer half-angles in degrees (falloff between)")
+        ->delimiter(',')
+        ->type_name("INNER,OUTER");
+    addVector(command, "--light-color", o.lightColor, "linear RGB tint of the lights given on the command line");
+}
+
+Scene loadSceneFromOptions(const SceneOptions& o) {
+    Scene scene = loadScene(o.scene, LoadOptions{o.sanitize});
+    const bool sun = !o.sunDirection.empty() || o.sunIrradiance;
+    const bool spot = !o.spotPosition.empty() || !o.spotDirection.empty() || o.spotIntensity || !o.spotAngles.empty();
+    if (!sun && !spot) return scene;
+    const glm::dvec3 color = o.lightColor.empty() ? glm::dvec3(1.0) : toVec3(o.lightColor, "--light-color");
+    std::vector<Light> lights;
+    if (sun) {
+        const Light* own = firstOfType(scene.lights, LightType::Directional);
+        Light light = own ? *own : Light{};
+        light.type = LightType::Directional;
+        if (!own) light.direction = glm::normalize(glm::dvec3(-0.3, -1.0, -0.2));
+        if (!o.sunDirection.empty()) light.direction = toVec3(o.sunDirection, "--sun-dir");
+        if (o.sunIrradiance) light.irradiance = *o.sunIrradiance;
+        light.color = color;
+        validateLight(light, "the sun given on the command line");
+        light.direction = glm::normalize(light.direction);
+        lights.push_back(light);
+    }
+    if (spot) {
+        const Light* own = firstOfType(scene.lights, LightType::Spot);
+        Light light = own ? *own : Light{};
+        light.type = LightType::Spot;
+        if (!own) light.position = scene.worldBounds.centre() + glm::dvec3(0.0, 0.45 * scene.worldBounds.size().y, 0.0);
+        if (!o.spotPosition.empty()) light.position = toVec3(o.spotPosition, "--spot-pos");
+        if (!o.spotDirection.empty()) light.direction = toVec3(o.spotDirection, "--spot-dir");
+        if (o.spotIntensity) light.intensity = *o.spotIntensity;
+        if (!o.spotAngles.empty()) {
+            if (o.spotAngles.size() != 2) fail("--spot-angles needs two numbers: inner,outer (degrees)");
+            light.innerAngleDeg = o.spotAngles[0];
+            light.outerAngleDeg = o.spotAngles[1];
+        }
+        light.color = color;
+        validateLight(light, "the spot light given on the command line");
+        light.direction = glm::normalize(light.direction);
+        lights.push_back(light);
+    }
+    scene.lights = lights;
+    return scene;
+}
+
+Camera cameraFromOptions(const SceneOptions& o, const Scene& scene) {
+    Camera camera = o.cameraPreset.empty() ? scene.cameras.at(0) : scene.camera(o.cameraPreset);
+    if (!o.eye.empty()) camera.eye = toVec3(o.eye, "--eye");
+    if (!o.target.empty()) camera.target = toVec3(o.target, "--target");
+    if (!o.up.empty()) camera.up = toVec3(o.up, "--up");
+    if (o.fovDeg) camera.fovYDeg = *o.fovDeg;
+    validateCamera(camera);
+    return camera;
+}
+
+}  // namespace vct::cli

@@ -1,0 +1,36 @@
+#pragma once
+// Options every subcommand that needs a scene shares: which scene, which camera, which lights.
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <CLI/CLI.hpp>
+
+#include "scene/scene.hpp"
+
+namespace vct::cli {
+
+struct SceneOptions {
+    std::string scene = "cornell";
+    bool sanitize = false;
+    std::string cameraPreset;
+    std::vector<double> eye, target, up;
+    std::optional<double> fovDeg;
+    std::vector<double> sunDirection;
+    std::optional<double> sunIrradiance;
+    std::vector<double> spotPosition, spotDirection, spotAngles;
+    std::optional<double> spotIntensity;
+    std::vector<double> lightColor;
+};
+
+void addSceneOptions(CLI::App& command, SceneOptions& options, bool withCameraAndLights);
+
+// Loads the scene and replaces its lights when any --sun-* / --spot-* option is given (a sun
+// option gives one sun, a spot option one spot, both give both; parameters not given keep the
+// scene's own light of that type, or a documented default).
+Scene loadSceneFromOptions(const SceneOptions& options);
+
+// The scene's default camera, or the chosen preset, with --eye/--target/--up/--fov applied.
+Camera cameraFromOptions(const SceneOptions& options, const Scene& scene);
+
+}  // namespace vct::cli

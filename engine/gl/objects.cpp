@@ -1,0 +1,69 @@
+#include "gl/objects.hpp"
+
+#include <cstring>
+
+#include "core/error.hpp"
+
+namespace vct::gl {
+namespace {
+void label(GLenum identifier, GLuint name, const char* text) {
+    if (text && *text) glObjectLabel(identifier, name, GLsizei(std::strlen(text)), text);
+}
+}  // namespace
+
+Buffer createBuffer(GLsizeiptr bytes, const void* data, GLbitfield storageFlags, const char* text) {
+    GLuint id = 0;
+    glCreateBuffers(1, &id);
+    Buffer buffer(id);
+    glNamedBufferStorage(id, bytes > 0 ? bytes : 1, data, storageFlags);
+    label(GL_BUFFER, id, text);
+    checkErrors(concat("allocating buffer '", text ? text : "", "' (", bytes, " bytes)"));
+    return buffer;
+}
+
+Texture createTexture(GLenum target, const char* text) {
+    GLuint id = 0;
+    glCreateTextures(target, 1, &id);
+    Texture texture(id);
+    label(GL_TEXTURE, id, text);
+    return texture;
+}
+
+Texture createTexture2D(GLenum internalFormat, int width, int height, int levels, const char* text) {
+    Texture texture = createTexture(GL_TEXTURE_2D, text);
+    glTextureStorage2D(texture.id(), levels, internalFormat, width, height);
+    glTextureParameteri(texture.id(), GL_TEXTURE_MIN_FILTER, levels > 1 ? GL_LINEAR_MIPMAP_LINEAR : GL_NEAREST);
+    glTextureParameteri(texture.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    glTextureParameteri(texture.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    glTextureParameteri(texture.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    checkErrors(concat("allocating texture '", text ? text : "", "' (", width, "x", height, ")"));
+    return texture;
+}
+
+Framebuffer createFramebuffer(const char* text) {
+    GLuint id = 0;
+    glCreateFramebuffers(1, &id);
+    Framebuffer framebuffer(id);
+    label(GL_FRAMEBUFFER, id, text);
+    return framebuffer;
+}
+
+VertexArray createVertexArray() {
+    GLuint id = 0;
+    glCreateVertexArrays(1, &id);
+    return VertexArray(id);
+}
+
+Query createQuery(GLenum target) {
+    GLuint id = 0;
+    glCreateQueries(target, 1, &id);
+    return Query(id);
+}
+
+Sampler createSampler() {
+    GLuint id = 0;
+    glCreateSamplers(1, &id);
+    return Sampler(id);
+}
+
+}  // namespace vct::gl

@@ -1,0 +1,54 @@
+#include "pipeline/timings_report.hpp"
+
+#include <cstdio>
+#include <fstream>
+
+#include <nlohmann/json.hpp>
+
+#include "core/error.hpp"
+#include "core/image.hpp"
+
+namespace vct {
+
+std::string formatTimingsTable(const TimingsReport& report) {
+    std::string out;
+    char line[256];
+    std::snprintf(line, sizeof line, "%-18s %10s %10s\n", "pass", "gpu ms", "cpu ms");
+    out += line;
+    for (const auto& pass : report.timings.passes) {
+        std::snprintf(line, sizeof line, "%-18s %10.3f %10.3f\n", pass.name.c_str(), pass.gpuMs, pass.cpuMs);
+        out += line;
+    }
+    std::snprintf(line, sizeof line, "%-18s %10.3f %10.3f   (%s, %dx%d)\n", "total", report.timings.totalGpuMs,
+                  report.timings.totalCpuMs, report.context.renderer.c_str(), report.width, report.height);
+    out += line;
+    return out;
+}
+
+void writeTimingsJson(const std::filesystem::path& path, const TimingsReport& report) {
+    ensureWritable(path);
+    nlohmann::json json;
+    json["backend"] = report.context.backend;
+    json["renderer"] = report.context.renderer;
+    json["gl_version"] = report.context.version;
+    json["width"] = report.width;
+    json["height"] = report.height;
+    json["frame"] = report.timings.frame;
+    json["passes"] = nlohmann::json::array();
+    for (const auto& pass : report.timings.passes)
+        json["passes"].push_back({{"name", pass.name}, {"gpu_ms", pass.gpuMs}, {"cpu_ms", pass.cpuMs}});
+    json["total_gpu_ms"] = report.timings.totalGpuMs;
+    json["total_cpu_ms"] = report.timings.totalCpuMs;
+    std::size_t total = 0;
+    json["memory"] = nlohmann::json::array();
+    for (const auto& pool : report.memory) {
+        json["memory"].push_back({{"name", pool.name}, {"bytes", pool.bytes}});
+        total += pool.bytes;
+    }
+    json["memory_total_bytes"] = total;
+    std::ofstream file(path);
+    file << json.dump(2) << "\n";
+    if (!file) fail("cannot write timings to '", path.string(), "'");
+}
+
+}  // namespace vct

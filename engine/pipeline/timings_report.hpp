@@ -1,0 +1,31 @@
+#pragma once
+// The timing report of a rendered frame: a table for people (stdout) and JSON for tools.
+// JSON schema (documented in README "Timings"):
+//   { "backend": str, "renderer": str, "gl_version": str, "width": int, "height": int,
+//     "frame": int,              index of the reported frame (earlier frames warm caches)
+//     "passes": [ { "name": str, "gpu_ms": num, "cpu_ms": num } ],   in execution order
+//     "total_gpu_ms": num,       GPU time from the first pass's start to the last pass's end
+//     "total_cpu_ms": num,       sum of the passes' CPU submission times
+//     "memory": [ { "name": str, "bytes": int } ], "memory_total_bytes": int }
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "gl/context.hpp"
+#include "gl/gpu_timer.hpp"
+#include "pipeline/renderer.hpp"
+
+namespace vct {
+
+struct TimingsReport {
+    gl::ContextInfo context;
+    int width = 0;
+    int height = 0;
+    gl::FrameTimings timings;
+    std::vector<MemoryPool> memory;
+};
+
+std::string formatTimingsTable(const TimingsReport& report);
+void writeTimingsJson(const std::filesystem::path& path, const TimingsReport& report);
+
+}  // namespace vct

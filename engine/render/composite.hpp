@@ -1,0 +1,42 @@
+#pragma once
+// Composite pass (DESIGN §4 pass 13): direct + emissive (+ indirect later) into a linear HDR
+// image and a tone-mapped 8-bit sRGB image; or one AOV buffer instead, for tests and figures.
+#include <string>
+
+#include "core/image.hpp"
+#include "gl/objects.hpp"
+#include "render/gbuffer.hpp"
+
+namespace vct {
+
+enum class Aov { Final, Direct, Albedo, Normal, Depth };
+enum class ToneCurve { Aces, Reinhard, Clamp };
+
+Aov parseAov(const std::string& name);            // throws listing the valid names
+ToneCurve parseToneCurve(const std::string& name);
+const char* aovName(Aov aov);
+
+struct DisplaySettings {
+    Aov aov = Aov::Final;
+    ToneCurve toneCurve = ToneCurve::Aces;
+    double exposureEV = 0.0;
+};
+
+class Composite {
+public:
+    Composite(int width, int height);
+    void render(const GBuffer& gbuffer, GLuint directRadiance, const ViewTransform& camera, float depthScale,
+                const DisplaySettings& display);
+
+    ImageF readHdr() const;  // rows top to bottom
+    Image8 readLdr() const;
+    GLuint ldr() const { return ldr_.id(); }
+    std::size_t bytes() const { return std::size_t(width_) * height_ * (16 + 4); }
+
+private:
+    int width_, height_;
+    gl::Texture hdr_, ldr_;
+    gl::Program program_;
+};
+
+}  // namespace vct

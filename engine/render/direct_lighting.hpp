@@ -1,0 +1,26 @@
+#pragma once
+// Direct lighting pass: per pixel, the Lambertian reflection of every light with its shadow
+// (PCF over the light-view map's depth). Output: linear radiance, RGBA32F.
+#include <vector>
+
+#include "gl/objects.hpp"
+#include "render/gbuffer.hpp"
+#include "render/light_view.hpp"
+
+namespace vct {
+
+class DirectLighting {
+public:
+    DirectLighting(int width, int height);
+    void render(const GBuffer& gbuffer, const Scene& scene, const std::vector<Light>& lights,
+                const std::vector<LightViewMap>& lightViews, int pcfRadius);
+    GLuint radiance() const { return radiance_.id(); }
+    std::size_t bytes() const { return std::size_t(width_) * height_ * 16; }
+
+private:
+    int width_, height_;
+    gl::Texture radiance_;
+    gl::Program program_;
+};
+
+}  // namespace vct

@@ -1,0 +1,30 @@
+#pragma once
+// G-buffer pass (DESIGN §4 pass 11): rasterizes the scene from the camera into albedo, normal,
+// position and emissive targets that the lighting passes read per pixel.
+#include "gl/objects.hpp"
+#include "render/gpu_scene.hpp"
+#include "render/view.hpp"
+
+namespace vct {
+
+class GBuffer {
+public:
+    GBuffer(int width, int height);
+    void render(const GpuScene& scene, const ViewTransform& camera);
+
+    GLuint albedo() const { return albedo_.id(); }      // RGBA16F linear albedo
+    GLuint normal() const { return normal_.id(); }      // RGBA16F unit normal facing the camera
+    GLuint position() const { return position_.id(); }  // RGBA32F scene-local position, w=0 sky
+    GLuint emissive() const { return emissive_.id(); }  // RGBA16F emitted radiance
+    int width() const { return width_; }
+    int height() const { return height_; }
+    std::size_t bytes() const;
+
+private:
+    int width_, height_;
+    gl::Texture albedo_, normal_, position_, emissive_, depth_;
+    gl::Framebuffer framebuffer_;
+    gl::Program program_;
+};
+
+}  // namespace vct

@@ -1,0 +1,78 @@
+#include "render/gpu_scene.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+
+#include "core/error.hpp"
+#include "gl/shader.hpp"
+
+namespace vct {
+
+GpuScene::GpuScene(const Scene& scene) : vertexArray_(gl::createVertexArray()) {
+    vertices_ = gl::createBuffer(GLsizeiptr(scene.vertices.size() * sizeof(Vertex)), scene.vertices.data(), 0,
+                                 "scene vertices");
+    indices_ = gl::createBuffer(GLsizeiptr(scene.indices.size() * sizeof(std::uint32_t)), scene.indices.data(), 0,
+                                "scene indices");
+    bytes_ = scene.vertices.size() * sizeof(Vertex) + scene.indices.size() * sizeof(std::uint32_t);
+
+    const GLuint vao = vertexArray_.id();
+    glVertexArrayVertexBuffer(vao, 0, vertices_.id(), 0, sizeof(Vertex));
+    glVertexArrayElementBuffer(vao, indices_.id());
+    const GLuint offsets[] = {offsetof(Vertex, position), offsetof(Vertex, normal), offsetof(Vertex, uv)};
+    const GLint sizes[] = {3, 3, 2};
+    for (GLuint attribute = 0; attribute < 3; ++attribute) {
+        glEnableVertexArrayAttrib(vao, attribute);
+        glVertexArrayAttribFormat(vao, attribute, sizes[attribute], GL_FLOAT, GL_FALSE, offsets[attribute]);
+        glVertexArrayAttribBinding(vao, attribute, 0);
+    }
+
+    GLfloat maxAnisotropy = 1.0f;
+    const bool anisotropic = GLAD_GL_ARB_texture_filter_anisotropic || GLAD_GL_EXT_texture_filter_anisotropic;
+    if (anisotropic) glGetFloatv(GL_MAX_TEXTURE_MAX_ANISOTROPY, &maxAnisotropy);
+    for (const Texture& texture : scene.textures) {
+        const int levels = 1 + int(std::floor(std::log2(std::max(texture.width, texture.height))));
+        gl::Texture gpu = gl::createTexture(GL_TEXTURE_2D, texture.name.c_str());
+        // sRGB storage: sampling returns linear values and mipmaps/filtering happen in linear space.
+        glTextureStorage2D(gpu.id(), levels, GL_SRGB8_ALPHA8, texture.width, texture.height);
+        // Scene textures are stored top row first; GL's t = 0 is the bottom row, matching the
+        // bottom-left UV origin Assimp gives every format (glTF's v is flipped on import).
+        const std::size_t rowBytes = std::size_t(texture.width) * 4;
+        for (int y = 0; y < texture.height; ++y)
+            glTextureSubImage2D(gpu.id(), 0, 0, texture.height - 1 - y, texture.width, 1, GL_RGBA, GL_UNSIGNED_BYTE,
+                                texture.rgba.data() + rowBytes * y);
+        glGenerateTextureMipmap(gpu.id());
+        glTextureParameteri(gpu.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+        glTextureParameteri(gpu.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+        glTextureParameteri(gpu.id(), GL_TEXTURE_WRAP_S, GL_REPEAT);
+        glTextureParameteri(gpu.id(), GL_TEXTURE_WRAP_T, GL_REPEAT);
+        if (anisotropic) glTextureParameterf(gpu.id(), GL_TEXTURE_MAX_ANISOTROPY, std::min(8.0f, maxAnisotropy));
+        gl::checkErrors(concat("uploading texture '", texture.name, "' (", texture.width, "x", texture.height, ")"));
+        bytes_ += rowBytes * texture.height * 4 / 3;
+        textures_.push_back(std::move(gpu));
+    }
+
+    for (const Material& material : scene.materials)
+        materials_.push_back({material.baseColor, material.baseAlpha, material.emissive,
+                              material.alphaMode == AlphaMode::Mask ? material.alphaCutoff : -1.0f,
+                              material.baseColorTexture});
+    ranges_ = scene.drawRanges;
+}
+
+void GpuScene::draw(GLuint program, GLuint textureUnit) const {
+    glBindVertexArray(vertexArray_.id());
+    gl::setUniform(program, "uBaseColorTexture", int(textureUnit));
+    for (const DrawRange& range : ranges_) {
+        const GpuMaterial& m = materials_[range.material];
+        gl::setUniform(program, "uBaseColor", glm::vec4(m.baseColor, m.baseAlpha));
+        gl::setUniform(program, "uEmissive", m.emissive);
+        gl::setUniform(program, "uAlphaCutoff", m.alphaCutoff);
+        gl::setUniform(program, "uHasTexture", m.texture >= 0 ? 1 : 0);
+        glBindTextureUnit(textureUnit, m.texture >= 0 ? textures_[std::size_t(m.texture)].id() : 0);
+        glDrawElements(GL_TRIANGLES, GLsizei(range.indexCount), GL_UNSIGNED_INT,
+                       reinterpret_cast<const void*>(std::uintptr_t(range.firstIndex) * sizeof(std::uint32_t)));
+    }
+    glBindVertexArray(0);
+}
+
+}  // namespace vct

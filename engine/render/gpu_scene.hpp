@@ -1,0 +1,42 @@
+#pragma once
+// The scene's geometry and materials on the GPU: one interleaved vertex buffer, one index
+// buffer sorted by material, and one mipmapped sRGB texture per base-colour image. Every pass
+// that rasterizes the scene (G-buffer, light-view map, and later voxelization) draws it through
+// draw(), which sets the material uniforms declared in shaders/material.glsl.
+#include <cstddef>
+#include <vector>
+
+#include "gl/objects.hpp"
+#include "scene/scene.hpp"
+
+namespace vct {
+
+class GpuScene {
+public:
+    explicit GpuScene(const Scene& scene);
+
+    // Draws every triangle with `program` bound; sets its material uniforms and binds the
+    // base-colour texture to `textureUnit`.
+    void draw(GLuint program, GLuint textureUnit = 0) const;
+
+    std::size_t bytes() const { return bytes_; }
+
+private:
+    struct GpuMaterial {
+        glm::vec3 baseColor;
+        float baseAlpha;
+        glm::vec3 emissive;
+        float alphaCutoff;  // negative: opaque
+        int texture;        // index into textures_, −1 none
+    };
+
+    gl::VertexArray vertexArray_;
+    gl::Buffer vertices_;
+    gl::Buffer indices_;
+    std::vector<gl::Texture> textures_;
+    std::vector<GpuMaterial> materials_;
+    std::vector<DrawRange> ranges_;
+    std::size_t bytes_ = 0;
+};
+
+}  // namespace vct

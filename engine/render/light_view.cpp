@@ -1,0 +1,60 @@
+#include "render/light_view.hpp"
+
+#include "core/error.hpp"
+#include "gl/shader.hpp"
+#include "render/light_uniforms.hpp"
+
+namespace vct {
+
+LightViewMap::LightViewMap(int resolution)
+    : resolution_(resolution),
+      depth_(gl::createTexture2D(GL_DEPTH_COMPONENT32F, resolution, resolution, 1, "light-view depth")),
+      position_(gl::createTexture2D(GL_RGBA32F, resolution, resolution, 1, "light-view position")),
+      normal_(gl::createTexture2D(GL_RGBA16F, resolution, resolution, 1, "light-view normal")),
+      flux_(gl::createTexture2D(GL_RGBA16F, resolution, resolution, 1, "light-view flux")),
+      framebuffer_(gl::createFramebuffer("light-view")),
+      program_(gl::buildProgram({{GL_VERTEX_SHADER, "scene.vert"}, {GL_FRAGMENT_SHADER, "light_view.frag"}})) {
+    // Hardware-filtered shadow comparison; outside the map counts as lit (border depth 0).
+    const GLuint d = depth_.id();
+    glTextureParameteri(d, GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
+    glTextureParameteri(d, GL_TEXTURE_COMPARE_FUNC, GL_GEQUAL);
+    glTextureParameteri(d, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    glTextureParameteri(d, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glTextureParameteri(d, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_BORDER);
+    glTextureParameteri(d, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_BORDER);
+    const float border[4] = {0, 0, 0, 0};
+    glTextureParameterfv(d, GL_TEXTURE_BORDER_COLOR, border);
+
+    const GLuint fbo = framebuffer_.id();
+    glNamedFramebufferTexture(fbo, GL_COLOR_ATTACHMENT0, position_.id(), 0);
+    glNamedFramebufferTexture(fbo, GL_COLOR_ATTACHMENT1, normal_.id(), 0);
+    glNamedFramebufferTexture(fbo, GL_COLOR_ATTACHMENT2, flux_.id(), 0);
+    glNamedFramebufferTexture(fbo, GL_DEPTH_ATTACHMENT, d, 0);
+    const GLenum buffers[] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1, GL_COLOR_ATTACHMENT2};
+    glNamedFramebufferDrawBuffers(fbo, 3, buffers);
+    if (glCheckNamedFramebufferStatus(fbo, GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
+        fail("the light-view framebuffer is incomplete on this driver (", resolution, "²)");
+}
+
+std::size_t LightViewMap::bytes() const { return std::size_t(resolution_) * resolution_ * (4 + 16 + 8 + 8); }
+
+void LightViewMap::render(const GpuScene& gpuScene, const Scene& scene, const Light& light) {
+    transform_ = lightView(light, scene, resolution_);
+    glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_.id());
+    glViewport(0, 0, resolution_, resolution_);
+    const float zero[4] = {0, 0, 0, 0};
+    for (int i = 0; i < 3; ++i) glClearNamedFramebufferfv(framebuffer_.id(), GL_COLOR, i, zero);
+    glClearNamedFramebufferfv(framebuffer_.id(), GL_DEPTH, 0, zero);
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_GREATER);
+    glDisable(GL_CULL_FACE);
+    const GLuint p = program_.id();
+    glUseProgram(p);
+    gl::setUniform(p, "uViewProjection", transform_.view.viewProjection);
+    gl::setUniform(p, "uTexelFootprint", transform_.texelFootprint);
+    setLightUniforms(p, light, scene);
+    gpuScene.draw(p);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+}
+
+}  // namespace vct

@@ -1,0 +1,54 @@
+#version 450
+// Final image: direct (shadowed) + emissive (+ indirect, with the GI pipeline), written as linear
+// HDR and as a tone-mapped 8-bit sRGB image. With an AOV selected, that buffer is written instead
+// (raw values in HDR, a visualisation in 8 bits).
+#include "tonemap.glsl"
+
+layout(local_size_x = 8, local_size_y = 8) in;
+
+layout(binding = 0) uniform sampler2D uAlbedo;
+layout(binding = 1) uniform sampler2D uNormal;
+layout(binding = 2) uniform sampler2D uPosition;
+layout(binding = 3) uniform sampler2D uEmissive;
+layout(binding = 4) uniform sampler2D uDirect;
+layout(rgba32f, binding = 0) uniform writeonly image2D uHdr;
+layout(rgba8, binding = 1) uniform writeonly image2D uLdr;
+
+const int AOV_FINAL = 0;
+const int AOV_DIRECT = 1;
+const int AOV_ALBEDO = 2;
+const int AOV_NORMAL = 3;
+const int AOV_DEPTH = 4;
+
+uniform int uAov;
+uniform float uExposure;     // 2^EV
+uniform int uToneCurve;
+uniform vec3 uEye;
+uniform vec3 uForward;
+uniform float uDepthScale;   // depth shown as white in the 8-bit depth view
+
+void main() {
+    ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
+    if (any(greaterThanEqual(pixel, imageSize(uHdr)))) return;
+    vec4 position = texelFetch(uPosition, pixel, 0);
+    bool sky = position.w <= 0.0;
+    vec3 hdr;
+    vec3 ldr;
+    if (uAov == AOV_ALBEDO) {
+        hdr = sky ? vec3(0.0) : texelFetch(uAlbedo, pixel, 0).rgb;
+        ldr = linearToSrgb(hdr);
+    } else if (uAov == AOV_NORMAL) {
+        hdr = sky ? vec3(0.0) : texelFetch(uNormal, pixel, 0).xyz;
+        ldr = sky ? vec3(0.0) : hdr * 0.5 + 0.5;
+    } else if (uAov == AOV_DEPTH) {
+        float depth = sky ? 0.0 : dot(position.xyz - uEye, uForward);
+        hdr = vec3(depth);
+        ldr = vec3(sky ? 0.0 : 1.0 - clamp(depth / uDepthScale, 0.0, 1.0));
+    } else {
+        hdr = texelFetch(uDirect, pixel, 0).rgb;
+        if (uAov == AOV_FINAL && !sky) hdr += texelFetch(uEmissive, pixel, 0).rgb;
+        ldr = linearToSrgb(toneCurve(hdr * uExposure, uToneCurve));
+    }
+    imageStore(uHdr, pixel, vec4(hdr, sky ? 0.0 : 1.0));
+    imageStore(uLdr, pixel, vec4(ldr, 1.0));
+}

@@ -1,0 +1,36 @@
+#version 450
+// Light-view map: the scene seen from a light. Depth makes it the shadow map; position, normal
+// and reflected flux per texel make it the photon source of the GI pipeline (DESIGN §4 pass 7).
+#include "material.glsl"
+#include "lights.glsl"
+
+in vec3 vPosition;
+in vec3 vNormal;
+in vec2 vUv;
+
+uniform LightParams uLight;
+uniform float uTexelFootprint;  // m² (directional) or sr at the axis (spot)
+
+layout(location = 0) out vec4 outPosition;  // scene-local, 1
+layout(location = 1) out vec4 outNormal;    // facing the light
+layout(location = 2) out vec4 outFlux;      // reflected flux ρ·Φ of this texel, W
+
+void main() {
+    vec4 base = materialBaseColor(vUv);
+    vec3 toLight;
+    float distanceToLight;
+    vec3 incident = incidentIrradiance(uLight, vPosition, toLight, distanceToLight);
+    // Flux through one texel: E·A for a parallel beam (a tilted surface covers more area but
+    // receives E·cosθ, so the texel's flux does not depend on θ); I·ω for a spot, where the
+    // texel's solid angle shrinks as cos³ away from the axis and E already holds 1/d².
+    vec3 flux;
+    if (uLight.type == LIGHT_DIRECTIONAL) {
+        flux = incident * uTexelFootprint;
+    } else {
+        float cosAxis = max(dot(-toLight, uLight.direction), 0.0);
+        flux = incident * distanceToLight * distanceToLight * uTexelFootprint * cosAxis * cosAxis * cosAxis;
+    }
+    outPosition = vec4(vPosition, 1.0);
+    outNormal = vec4(facingNormal(vNormal, vPosition, toLight), 0.0);
+    outFlux = vec4(base.rgb * flux, 0.0);
+}
