@@ -26,9 +26,10 @@ struct CommandResult {
     std::string output;  // stdout and stderr together
 };
 
-// Runs `vct <arguments>` through the shell; arguments are passed verbatim.
-inline CommandResult runVct(const std::string& arguments) {
-    const std::string command = std::string(VCT_BINARY) + " " + arguments + " 2>&1";
+// Runs `vct <arguments>` through the shell; arguments are passed verbatim. `environment` is
+// prefixed to the command ("NAME=value ...").
+inline CommandResult runVct(const std::string& arguments, const std::string& environment = "") {
+    const std::string command = environment + " " + std::string(VCT_BINARY) + " " + arguments + " 2>&1";
     CommandResult result;
     FILE* pipe = popen(command.c_str(), "r");
     if (!pipe) return result;

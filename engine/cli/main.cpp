@@ -16,6 +16,7 @@ int main(int argc, char** argv) {
     }
     CLI::App app{"vct: real-time global illumination by voxel cone tracing over a sparse voxel octree"};
     app.require_subcommand(1);
+    app.fallthrough();  // global options (-q) may also follow the subcommand
     bool quiet = false;
     app.add_flag("-q,--quiet", quiet, "only warnings and errors on stderr, no timing table");
     cli::Run render = cli::addRenderCommand(app);

@@ -1,0 +1,154 @@
+// Direct lighting in physical units through the real `vct render` command: a Lambertian plane
+// under a sun or a spot must show L = ρ/π · E · cosθ in the linear HDR output.
+#include <cmath>
+#include <fstream>
+
+#include <glm/gtc/constants.hpp>
+#include <nlohmann/json.hpp>
+
+#include "core/image.hpp"
+#include "scene/light.hpp"
+#include "test_models.hpp"
+#include "test_util.hpp"
+
+using namespace vct;
+
+namespace {
+
+// Mean of channel c over a square window of half-size r around (x, y).
+double windowMean(const ImageF& image, int x, int y, int r, int c) {
+    double sum = 0;
+    int n = 0;
+    for (int j = y - r; j <= y + r; ++j)
+        for (int i = x - r; i <= x + r; ++i) {
+            sum += image.at(i, j)[c];
+            ++n;
+        }
+    return sum / n;
+}
+
+// Renders `model` looking straight down from above at the origin.
+ImageF renderTopDown(const std::filesystem::path& model, const std::string& lightOptions, const std::string& extra = "") {
+    const auto out = model.parent_path() / "out";
+    const auto result = test::runVct("render -q --scene " + model.string() +
+                                     " --eye 0,4,0.0001 --target 0,0,0 --fov 60 --width 96 --height 96 " +
+                                     lightOptions + " " + extra + " --out " + out.string() + ".png --hdr-out " +
+                                     out.string() + ".pfm");
+    EXPECT_EQ(result.exitCode, 0) << result.output;
+    return readHdrImage(out.string() + ".pfm");
+}
+
+}  // namespace
+
+TEST(DirectLighting, SunOnPlaneMatchesLambert) {
+    const auto dir = test::testDir();
+    test::ObjWriter obj;
+    obj.material("grey", {0.5f, 0.25f, 0.75f});
+    obj.floor(0.0f, 3.0f);
+    const auto model = obj.write(dir);
+    for (double thetaDeg : {0.0, 30.0, 60.0}) {
+        const double theta = glm::radians(thetaDeg);
+        const double E = 2.0;
+        const std::string sun = "--sun-dir " + std::to_string(std::sin(theta)) + "," + std::to_string(-std::cos(theta)) +
+                                ",0 --sun-irradiance " + std::to_string(E);
+        const ImageF image = renderTopDown(model, sun);
+        const double expected[3] = {0.5 / glm::pi<double>() * E * std::cos(theta),
+                                    0.25 / glm::pi<double>() * E * std::cos(theta),
+                                    0.75 / glm::pi<double>() * E * std::cos(theta)};
+        for (int c = 0; c < 3; ++c)
+            EXPECT_NEAR(windowMean(image, 48, 48, 10, c), expected[c], 0.01 * expected[c])
+                << "theta " << thetaDeg << " channel " << c;
+    }
+}
+
+TEST(DirectLighting, SpotOnPlaneMatchesInverseSquareAndFalloff) {
+    const auto dir = test::testDir();
+    test::ObjWriter obj;
+    obj.material("white", glm::vec3(0.8f));
+    obj.floor(0.0f, 3.0f);
+    const auto model = obj.write(dir);
+    const double I = 5.0, height = 2.0, inner = 20.0, outer = 40.0;
+    const ImageF image = renderTopDown(model, "--spot-pos 0,2,0 --spot-dir 0,-1,0 --spot-intensity 5 --spot-angles 20,40");
+    // Directly below: E = I / h².
+    EXPECT_NEAR(windowMean(image, 48, 48, 1, 1), 0.8 / glm::pi<double>() * I / (height * height), 0.01 * 0.8 / glm::pi<double>() * I / 4);
+    // Off axis, in the falloff band: check every pixel along the row against the closed form.
+    // Pixel centre → world point on the plane through the same pinhole the renderer uses.
+    const double halfExtent = 4.0 * std::tan(glm::radians(30.0));
+    int checked = 0;
+    for (int x = 48; x < 96; ++x) {
+        const double px = ((x + 0.5) / 96.0 * 2.0 - 1.0) * halfExtent;
+        const double d2 = px * px + height * height;
+        const double cosAngle = height / std::sqrt(d2);
+        const double E = I * spotFalloff(cosAngle, inner, outer) * cosAngle / d2;
+        const double expected = 0.8 / glm::pi<double>() * E;
+        const double got = image.at(x, 48)[1];
+        // Pixel-centre sampling of a function that varies within the pixel: 2% or 2e-4 absolute.
+        EXPECT_NEAR(got, expected, std::max(0.02 * expected, 2e-4)) << "x " << x << " px " << px;
+        ++checked;
+    }
+    EXPECT_EQ(checked, 48);
+}
+
+TEST(DirectLighting, BoxCastsAShadowOnTheFloor) {
+    const auto dir = test::testDir();
+    test::ObjWriter obj;
+    obj.material("white", glm::vec3(0.6f));
+    obj.floor(0.0f, 3.0f);
+    obj.box({-0.5f, 1.0f, -0.5f}, {0.5f, 1.2f, 0.5f});  // a slab floating above the floor
+    const auto model = obj.write(dir);
+    // Camera looks from the side-top so the floor under the slab is visible; sun straight down.
+    const auto out = dir / "shadow";
+    const auto result = test::runVct("render -q --scene " + model.string() +
+                                     " --eye 0,2.5,3.5 --target 0,0,0 --fov 50 --width 128 --height 96"
+                                     " --sun-dir 0,-1,0 --sun-irradiance 3 --aov direct --hdr-out " + out.string() +
+                                     ".pfm --out " + out.string() + ".png");
+    ASSERT_EQ(result.exitCode, 0) << result.output;
+    const ImageF image = readHdrImage(out.string() + ".pfm");
+    // Project world points to pixels with the same camera to find the shadowed and lit floor.
+    auto project = [&](glm::dvec3 p) {
+        const glm::dvec3 eye(0, 2.5, 3.5), forward = glm::normalize(-eye);
+        const glm::dvec3 right = glm::normalize(glm::cross(forward, glm::dvec3(0, 1, 0)));
+        const glm::dvec3 up = glm::cross(right, forward);
+        const glm::dvec3 v = p - eye;
+        const double f = 1.0 / std::tan(glm::radians(25.0));
+        const double x = glm::dot(v, right) / glm::dot(v, forward) * f / (128.0 / 96.0);
+        const double y = glm::dot(v, up) / glm::dot(v, forward) * f;
+        return glm::ivec2(int((x * 0.5 + 0.5) * 128), int((0.5 - y * 0.5) * 96));
+    };
+    const double lit = 0.6 / glm::pi<double>() * 3.0;
+    const glm::ivec2 litPixel = project({2.0, 0.0, 1.5});
+    EXPECT_NEAR(image.at(litPixel.x, litPixel.y)[0], lit, 0.01 * lit);
+    // The floor under the slab's centre is hidden by the slab from this camera, so look at the
+    // part of the shadow in front of it: z in (0.35, 0.5) is shadowed and visible.
+    const glm::ivec2 shadowPixel = project({0.0, 0.0, 0.45});
+    EXPECT_LT(image.at(shadowPixel.x, shadowPixel.y)[0], 0.02 * lit) << shadowPixel.x << "," << shadowPixel.y;
+    const glm::ivec2 besideShadow = project({0.0, 0.0, 0.7});
+    EXPECT_NEAR(image.at(besideShadow.x, besideShadow.y)[0], lit, 0.02 * lit);
+}
+
+TEST(DirectLighting, TimingsJsonListsEveryPass) {
+    const auto dir = test::testDir();
+    const auto json = dir / "t.json";
+    const auto result = test::runVct("render -q --scene cornell --width 64 --height 48 --light-view-res 256 --frames 2 --out " +
+                                     (dir / "c.png").string() + " --timings " + json.string());
+    ASSERT_EQ(result.exitCode, 0) << result.output;
+    std::ifstream file(json);
+    const auto timings = nlohmann::json::parse(file);
+    EXPECT_EQ(timings["backend"], "osmesa");
+    EXPECT_EQ(timings["width"], 64);
+    EXPECT_EQ(timings["height"], 48);
+    EXPECT_EQ(timings["frame"], 1);
+    std::vector<std::string> names;
+    double sum = 0;
+    for (const auto& pass : timings["passes"]) {
+        names.push_back(pass["name"]);
+        EXPECT_GE(pass["gpu_ms"].get<double>(), 0.0);
+        EXPECT_GE(pass["cpu_ms"].get<double>(), 0.0);
+        sum += pass["gpu_ms"].get<double>();
+    }
+    EXPECT_EQ(names, (std::vector<std::string>{"light_view", "gbuffer", "direct_lighting", "composite"}));
+    EXPECT_GT(timings["total_gpu_ms"].get<double>(), 0.0);
+    // Passes run back to back: their sum cannot exceed the frame span by more than rounding.
+    EXPECT_LE(sum, timings["total_gpu_ms"].get<double>() + 1e-3);
+    EXPECT_GT(timings["memory_total_bytes"].get<double>(), 64 * 48 * 16);
+}

@@ -1,0 +1,60 @@
+#pragma once
+// Small models written by tests: OBJ files of axis-aligned quads and boxes with one material each.
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+namespace vct::test {
+
+struct ObjMaterial {
+    std::string name;
+    glm::vec3 albedo{0.5f};
+};
+
+// Accumulates triangles per material and writes model.obj + model.mtl.
+class ObjWriter {
+public:
+    void material(const std::string& name, glm::vec3 albedo) { materials_.push_back({name, albedo}); use(name); }
+    void use(const std::string& name) { body_ += "usemtl " + name + "\n"; }
+    void triangle(glm::vec3 a, glm::vec3 b, glm::vec3 c) {
+        for (glm::vec3 v : {a, b, c}) vertices_.push_back(v);
+        const std::size_t n = vertices_.size();
+        body_ += "f " + std::to_string(n - 2) + " " + std::to_string(n - 1) + " " + std::to_string(n) + "\n";
+    }
+    void quad(glm::vec3 a, glm::vec3 b, glm::vec3 c, glm::vec3 d) {
+        triangle(a, b, c);
+        triangle(a, c, d);
+    }
+    // Horizontal square at height y, half-size h, centred on (cx, cz), facing +y.
+    void floor(float y, float h, float cx = 0, float cz = 0) {
+        quad({cx - h, y, cz + h}, {cx + h, y, cz + h}, {cx + h, y, cz - h}, {cx - h, y, cz - h});
+    }
+    // Axis-aligned closed box.
+    void box(glm::vec3 lo, glm::vec3 hi) {
+        const glm::vec3 c[8] = {{lo.x, lo.y, lo.z}, {hi.x, lo.y, lo.z}, {hi.x, hi.y, lo.z}, {lo.x, hi.y, lo.z},
+                                {lo.x, lo.y, hi.z}, {hi.x, lo.y, hi.z}, {hi.x, hi.y, hi.z}, {lo.x, hi.y, hi.z}};
+        const int faces[6][4] = {{0, 3, 2, 1}, {4, 5, 6, 7}, {0, 4, 7, 3}, {1, 2, 6, 5}, {0, 1, 5, 4}, {3, 7, 6, 2}};
+        for (const auto& f : faces) quad(c[f[0]], c[f[1]], c[f[2]], c[f[3]]);
+    }
+    std::filesystem::path write(const std::filesystem::path& dir, const std::string& name = "model") const {
+        std::ofstream mtl(dir / (name + ".mtl"));
+        for (const auto& m : materials_)
+            mtl << "newmtl " << m.name << "\nKd " << m.albedo.x << " " << m.albedo.y << " " << m.albedo.z << "\n";
+        const auto path = dir / (name + ".obj");
+        std::ofstream obj(path);
+        obj << "mtllib " << name << ".mtl\n";
+        for (const auto& v : vertices_) obj << "v " << v.x << " " << v.y << " " << v.z << "\n";
+        obj << body_;
+        return path;
+    }
+
+private:
+    std::vector<ObjMaterial> materials_;
+    std::vector<glm::vec3> vertices_;
+    std::string body_;
+};
+
+}  // namespace vct::test
