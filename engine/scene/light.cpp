@@ -1,0 +1,85 @@
+#include "scene/light.hpp"
+
+#include <cmath>
+#include <iomanip>
+#include <sstream>
+
+#include "core/error.hpp"
+
+namespace vct {
+namespace {
+
+bool isFinite(const glm::dvec3& v) {
+    return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
+}
+
+std::string str(const glm::dvec3& v) { return concat("(", v.x, ", ", v.y, ", ", v.z, ")"); }
+
+}  // namespace
+
+void validateLight(const Light& light, const std::string& what) {
+    const bool spot = light.type == LightType::Spot;
+    const char* kind = spot ? "spot light" : "directional light";
+    if (!isFinite(light.direction))
+        fail(what, " (", kind, "): direction ", str(light.direction),
+             " is not finite; give a direction such as (0, -1, 0)");
+    if (glm::length(light.direction) == 0.0)
+        fail(what, " (", kind, "): direction is the zero vector; give the direction in which the "
+                   "light travels, e.g. (0, -1, 0) for light from straight above");
+    if (!isFinite(light.color) || light.color.x < 0.0 || light.color.y < 0.0 ||
+        light.color.z < 0.0)
+        fail(what, " (", kind, "): colour ", str(light.color),
+             " must be finite and non-negative (linear RGB, e.g. (1, 1, 1))");
+    if (light.color == glm::dvec3(0.0))
+        fail(what, " (", kind, "): colour is black, so the light emits nothing; use a positive "
+                   "colour such as (1, 1, 1)");
+    if (!spot) {
+        if (!std::isfinite(light.irradiance) || light.irradiance <= 0.0)
+            fail(what, " (directional light): irradiance ", light.irradiance,
+                 " W/m² must be a positive finite number (bright daylight is ~1000 W/m²; "
+                 "scenes here use 1-20 with a matching exposure)");
+        return;
+    }
+    if (!isFinite(light.position))
+        fail(what, " (spot light): position ", str(light.position), " is not finite");
+    if (!std::isfinite(light.intensity) || light.intensity <= 0.0)
+        fail(what, " (spot light): intensity ", light.intensity,
+             " W/sr must be a positive finite number");
+    if (!std::isfinite(light.innerAngleDeg) || !std::isfinite(light.outerAngleDeg))
+        fail(what, " (spot light): cone angles inner ", light.innerAngleDeg, "°, outer ",
+             light.outerAngleDeg, "° must be finite");
+    if (light.innerAngleDeg < 0.0)
+        fail(what, " (spot light): inner cone angle ", light.innerAngleDeg,
+             "° is negative; use a half-angle in [0°, outer angle]");
+    if (light.outerAngleDeg <= 0.0)
+        fail(what, " (spot light): outer cone angle ", light.outerAngleDeg,
+             "° must be positive (it is the half-angle outside which the spot is dark)");
+    if (light.innerAngleDeg > light.outerAngleDeg)
+        fail(what, " (spot light): inner cone angle ", light.innerAngleDeg,
+             "° is larger than the outer angle ", light.outerAngleDeg,
+             "°; the inner half-angle must not exceed the outer one");
+    if (light.outerAngleDeg >= 90.0)
+        fail(what, " (spot light): outer cone angle ", light.outerAngleDeg,
+             "° must be below 90° (half-angle; a spot lights at most a hemisphere)");
+}
+
+std::string describe(const Light& light) {
+    std::ostringstream out;
+    out << std::setprecision(4);
+    const glm::dvec3 d = light.direction;
+    if (light.type == LightType::Directional) {
+        out << "directional light: direction (" << d.x << ", " << d.y << ", " << d.z
+            << "), irradiance " << light.irradiance << " W/m²";
+    } else {
+        const glm::dvec3 p = light.position;
+        out << "spot light: position (" << p.x << ", " << p.y << ", " << p.z << "), direction ("
+            << d.x << ", " << d.y << ", " << d.z << "), intensity " << light.intensity
+            << " W/sr, cone " << light.innerAngleDeg << "°–" << light.outerAngleDeg << "°";
+    }
+    if (light.color != glm::dvec3(1.0))
+        out << ", colour (" << light.color.x << ", " << light.color.y << ", " << light.color.z
+            << ")";
+    return out.str();
+}
+
+}  // namespace vct
