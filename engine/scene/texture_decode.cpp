@@ -1,0 +1,73 @@
+#include "scene/texture_decode.hpp"
+
+#include <climits>
+#include <cstring>
+
+#include <stb_image.h>  // implementation in libstb (Debian's libstb-dev)
+
+namespace vct {
+namespace {
+
+std::optional<Texture> adopt(stbi_uc* pixels, int width, int height, const std::string& name,
+                             std::string& error) {
+    if (!pixels) {
+        const char* reason = stbi_failure_reason();
+        error = reason ? reason : "unknown stb_image error";
+        return std::nullopt;
+    }
+    Texture texture;
+    texture.name = name;
+    texture.width = width;
+    texture.height = height;
+    const std::size_t bytes = std::size_t(width) * std::size_t(height) * 4;
+    texture.rgba.assign(pixels, pixels + bytes);
+    stbi_image_free(pixels);
+    return texture;
+}
+
+}  // namespace
+
+std::optional<Texture> decodeImageFile(const std::filesystem::path& file, const std::string& name,
+                                       std::string& error) {
+    int width = 0, height = 0, channels = 0;
+    stbi_uc* pixels = stbi_load(file.c_str(), &width, &height, &channels, 4);
+    return adopt(pixels, width, height, name, error);
+}
+
+std::optional<Texture> decodeImageMemory(const std::uint8_t* data, std::size_t size,
+                                         const std::string& name, std::string& error) {
+    if (!data || size == 0) {
+        error = "empty image data";
+        return std::nullopt;
+    }
+    if (size > std::size_t(INT_MAX)) {
+        error = "image data larger than 2 GiB";
+        return std::nullopt;
+    }
+    int width = 0, height = 0, channels = 0;
+    stbi_uc* pixels =
+        stbi_load_from_memory(data, static_cast<int>(size), &width, &height, &channels, 4);
+    return adopt(pixels, width, height, name, error);
+}
+
+bool hasTransparentTexel(const Texture& texture) {
+    for (std::size_t i = 3; i < texture.rgba.size(); i += 4)
+        if (texture.rgba[i] < 255) return true;
+    return false;
+}
+
+bool foldMaskIntoAlpha(Texture& target, const Texture& mask) {
+    const int channel = hasTransparentTexel(mask) ? 3 : 0;
+    const bool sameSize = target.width == mask.width && target.height == mask.height;
+    for (int y = 0; y < target.height; ++y) {
+        const int my = sameSize ? y : int((std::int64_t(y) * mask.height) / target.height);
+        for (int x = 0; x < target.width; ++x) {
+            const int mx = sameSize ? x : int((std::int64_t(x) * mask.width) / target.width);
+            const std::size_t from = (std::size_t(my) * mask.width + mx) * 4 + channel;
+            target.rgba[(std::size_t(y) * target.width + x) * 4 + 3] = mask.rgba[from];
+        }
+    }
+    return sameSize;
+}
+
+}  // namespace vct
