@@ -19,7 +19,9 @@ namespace vct {
 struct Vertex {
     glm::vec3 position;  // scene-local: world − Scene::origin
     glm::vec3 normal;    // unit length
-    glm::vec2 uv;
+    glm::vec2 uv;        // OpenGL convention for every format: (0,0) is the bottom-left of the
+                         // image, i.e. the start of the LAST row of Texture::rgba (assimp's
+                         // convention; glTF's v is flipped on import). Not wrapped: may leave [0,1].
 };
 
 // Base-colour texture, 8-bit RGBA as stored in the file (sRGB-encoded colour, linear alpha).

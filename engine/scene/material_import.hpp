@@ -1,0 +1,23 @@
+#pragma once
+// Assimp materials to vct materials: base colour (glTF base colour or diffuse), base alpha,
+// emissive radiance, alpha mode, and the base-colour texture decoded to RGBA8 (external files
+// relative to the model's folder, or embedded in the file). Every image is decoded once however
+// many materials use it. A texture that is missing or cannot be decoded is a warning (once per
+// file), is listed in LoadReport::missingTextures, and leaves the material untextured.
+#include <cstdint>
+#include <filesystem>
+#include <vector>
+
+#include "scene/scene.hpp"
+
+struct aiScene;
+
+namespace vct {
+
+// Imports the materials `used` (indices into aiScene::mMaterials, in that order) into
+// scene.materials, and the textures they use into scene.textures. Unreferenced textures are not
+// kept. `modelPath` is the model file (its folder resolves relative texture paths).
+void importMaterials(const aiScene& ai, const std::vector<std::uint32_t>& used,
+                     const std::filesystem::path& modelPath, Scene& scene);
+
+}  // namespace vct

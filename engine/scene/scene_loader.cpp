@@ -1,0 +1,510 @@
+// Scene loading: `--scene` values, the Assimp model importer (geometry, cameras, lights; the
+// materials are in material_import.cpp, the clean-up in mesh_cleanup.cpp) and the asset search
+// path.
+#include "scene/scene_loader.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <cstdlib>
+#include <limits>
+#include <numbers>
+#include <unordered_map>
+#include <unordered_set>
+
+#include <assimp/Importer.hpp>
+#include <assimp/postprocess.h>
+#include <assimp/scene.h>
+#include <assimp/version.h>
+
+#include "core/error.hpp"
+#include "core/log.hpp"
+#include "scene/material_import.hpp"
+#include "scene/mesh_cleanup.hpp"
+
+namespace fs = std::filesystem;
+
+namespace vct {
+
+const Camera& Scene::camera(const std::string& presetName) const {
+    for (const Camera& c : cameras)
+        if (c.name == presetName) return c;
+    std::string available;
+    for (const Camera& c : cameras) available += (available.empty() ? "'" : ", '") + c.name + "'";
+    fail("camera preset '", presetName, "' not found in scene '", name, "'; available: ",
+         available.empty() ? std::string("none") : available);
+}
+
+namespace {
+
+// ------------------------------------------------------------------------------------------------
+// Small helpers
+
+glm::dmat4 toDouble(const aiMatrix4x4& m) {
+    // aiMatrix4x4 is row-major (a1..a4 = first row); glm is column-major: r[column][row].
+    glm::dmat4 r;
+    for (int row = 0; row < 4; ++row)
+        for (int column = 0; column < 4; ++column) r[column][row] = double(m[row][column]);
+    return r;
+}
+
+glm::dvec3 toDouble(const aiVector3D& v) { return {double(v.x), double(v.y), double(v.z)}; }
+
+glm::dvec3 transformPoint(const glm::dmat4& m, const glm::dvec3& p) {
+    return glm::dvec3(m * glm::dvec4(p, 1.0));
+}
+
+glm::dvec3 transformDirection(const glm::dmat4& m, const glm::dvec3& d) {
+    return glm::dmat3(m) * d;
+}
+
+bool isGltf(const fs::path& path) {
+    std::string ext = path.extension().string();
+    for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    return ext == ".gltf" || ext == ".glb";
+}
+
+// Assimp ≥ 5.3 (PR #5055, #4886) fixed two glTF camera bugs present in the 5.2 series that
+// Debian 12 ships; we undo whichever the linked library has.
+bool assimpAtLeast(unsigned major, unsigned minor) {
+    const unsigned ma = aiGetVersionMajor(), mi = aiGetVersionMinor();
+    return ma > major || (ma == major && mi >= minor);
+}
+
+struct FlatNode {
+    const aiNode* node;
+    glm::dmat4 world;
+};
+
+// Every node with its world transform, accumulated in double, parents before children. Iterative
+// (no recursion depth limit) and robust against a node appearing twice in a corrupt tree.
+std::vector<FlatNode> flattenNodes(const aiScene& ai) {
+    std::vector<FlatNode> out;
+    if (!ai.mRootNode) return out;
+    std::vector<FlatNode> stack{{ai.mRootNode, toDouble(ai.mRootNode->mTransformation)}};
+    std::unordered_set<const aiNode*> seen;
+    while (!stack.empty()) {
+        FlatNode current = stack.back();
+        stack.pop_back();
+        if (!current.node || !seen.insert(current.node).second) continue;
+        out.push_back(current);
+        for (unsigned i = current.node->mNumChildren; i-- > 0;) {
+            const aiNode* child = current.node->mChildren[i];
+            if (child) stack.push_back({child, current.world * toDouble(child->mTransformation)});
+        }
+    }
+    return out;
+}
+
+// ------------------------------------------------------------------------------------------------
+// Geometry
+
+void gatherGeometry(const aiScene& ai, const std::vector<FlatNode>& nodes,
+                    const std::string& source, WorldGeometry& g,
+                    std::vector<std::uint32_t>& usedMaterials) {
+    std::unordered_map<std::uint32_t, std::uint32_t> materialSlot;  // ai index -> scene index
+    std::size_t ignoredPrimitives = 0;
+
+    for (const FlatNode& flat : nodes) {
+        const aiNode& node = *flat.node;
+        const glm::dmat3 linear(flat.world);
+        const glm::dmat3 normalMatrix = glm::transpose(glm::inverse(linear));
+        const bool mirrored = glm::determinant(linear) < 0.0;  // keep counter-clockwise = front
+
+        for (unsigned k = 0; k < node.mNumMeshes; ++k) {
+            const unsigned meshIndex = node.mMeshes[k];
+            if (meshIndex >= ai.mNumMeshes || !ai.mMeshes[meshIndex])
+                fail(source, ": node '", node.mName.C_Str(), "' refers to mesh ", meshIndex,
+                     ", but the file has only ", ai.mNumMeshes, " meshes; the file is corrupt");
+            const aiMesh& mesh = *ai.mMeshes[meshIndex];
+            const std::string meshName =
+                mesh.mName.length > 0 ? std::string(mesh.mName.C_Str()) : concat("mesh ", meshIndex);
+
+            std::size_t triangles = 0;
+            for (unsigned f = 0; f < mesh.mNumFaces; ++f) {
+                if (mesh.mFaces[f].mNumIndices == 3)
+                    ++triangles;
+                else
+                    ++ignoredPrimitives;  // points and lines (polygons were triangulated)
+            }
+            if (triangles == 0) continue;
+            if (!mesh.mVertices)
+                fail(source, ": mesh '", meshName, "' has faces but no vertex positions");
+
+            const std::uint64_t first = g.positions.size();
+            if (first + mesh.mNumVertices >= std::numeric_limits<std::uint32_t>::max())
+                fail(source, ": the model has more than 4 billion vertices once instanced; vct "
+                             "cannot index that many");
+            const std::uint32_t aiMaterial = mesh.mMaterialIndex < ai.mNumMaterials
+                                                 ? mesh.mMaterialIndex
+                                                 : ai.mNumMaterials;  // → a default material
+            if (aiMaterial == ai.mNumMaterials)
+                logWarnOnce(concat("badmaterial:", source, ":", meshIndex),
+                            concat(source, ": mesh '", meshName, "' refers to material ",
+                                   mesh.mMaterialIndex, " (the file has ", ai.mNumMaterials,
+                                   "); using a default grey material"));
+            auto [slot, inserted] =
+                materialSlot.emplace(aiMaterial, static_cast<std::uint32_t>(usedMaterials.size()));
+            if (inserted) usedMaterials.push_back(aiMaterial);
+
+            g.parts.push_back({meshName, meshIndex, static_cast<std::uint32_t>(first)});
+            const aiVector3D* uvs = mesh.mTextureCoords[0];
+            for (unsigned v = 0; v < mesh.mNumVertices; ++v) {
+                g.positions.push_back(transformPoint(flat.world, toDouble(mesh.mVertices[v])));
+                g.normals.push_back(mesh.mNormals ? normalMatrix * toDouble(mesh.mNormals[v])
+                                                  : glm::dvec3(0.0));
+                // Assimp's convention, kept as is (see Vertex::uv): v = 0 at the bottom of the
+                // image for every format (the glTF importer flips glTF's v).
+                g.uvs.push_back(uvs ? glm::dvec2(uvs[v].x, uvs[v].y) : glm::dvec2(0.0));
+            }
+            for (unsigned f = 0; f < mesh.mNumFaces; ++f) {
+                const aiFace& face = mesh.mFaces[f];
+                if (face.mNumIndices != 3) continue;
+                for (int c = 0; c < 3; ++c)
+                    if (face.mIndices[c] >= mesh.mNumVertices)
+                        fail(source, ": mesh '", meshName, "' face ", f, " uses vertex ",
+                             face.mIndices[c], ", but the mesh has only ", mesh.mNumVertices,
+                             " vertices; the file is corrupt");
+                const std::uint32_t a = face.mIndices[0], b = face.mIndices[1],
+                                    c = face.mIndices[2];
+                const auto base = static_cast<std::uint32_t>(first);
+                g.indices.push_back(base + a);
+                g.indices.push_back(base + (mirrored ? c : b));
+                g.indices.push_back(base + (mirrored ? b : c));
+                g.triangleMaterials.push_back(slot->second);
+            }
+        }
+    }
+    if (ignoredPrimitives > 0)
+        logWarn(concat(source, ": ignored ", ignoredPrimitives,
+                       " point and line primitives (only triangles are rendered)"));
+    if (g.triangleCount() == 0) {
+        if (ai.mNumMeshes == 0)
+            fail(source, ": the model has no triangles (the file contains no meshes; is it a "
+                         "valid model file?)");
+        fail(source, ": the model has no triangles (", ai.mNumMeshes, " meshes, ",
+             ignoredPrimitives, " point/line primitives, no triangle faces in the scene graph)");
+    }
+}
+
+// ------------------------------------------------------------------------------------------------
+// Cameras and lights
+
+Camera defaultCamera(const Bounds& bounds) {
+    // Looks at the centre from the +z side, a little above, far enough for the bounding sphere
+    // to fit a 45° field of view.
+    Camera camera;
+    camera.name = "default";
+    camera.fovYDeg = 45.0;
+    const double radius = 0.5 * glm::length(bounds.size());
+    const double distance =
+        radius > 0.0 ? radius / std::sin(glm::radians(0.5 * camera.fovYDeg)) : 1.0;
+    camera.target = bounds.centre();
+    camera.eye = camera.target + distance * glm::normalize(glm::dvec3(0.0, 0.25, 1.0));
+    camera.up = {0.0, 1.0, 0.0};
+    return camera;
+}
+
+Light defaultSun() {
+    Light sun;
+    sun.type = LightType::Directional;
+    sun.direction = glm::normalize(glm::dvec3(-0.3, -1.0, -0.2));
+    sun.irradiance = 3.0;
+    return sun;
+}
+
+const glm::dmat4* findNode(const std::unordered_map<std::string, glm::dmat4>& byName,
+                           const aiString& name) {
+    auto it = byName.find(name.C_Str());
+    return it == byName.end() ? nullptr : &it->second;
+}
+
+void importCameras(const aiScene& ai, const std::unordered_map<std::string, glm::dmat4>& byName,
+                   bool gltf, const std::string& source, Scene& scene) {
+    const double targetDistance = std::max(0.5 * glm::length(scene.worldBounds.size()), 1e-6);
+    std::unordered_set<std::string> names;
+    for (unsigned i = 0; i < ai.mNumCameras; ++i) {
+        const aiCamera* c = ai.mCameras[i];
+        if (!c) continue;
+        Camera camera;
+        const std::string baseName =
+            c->mName.length > 0 ? std::string(c->mName.C_Str()) : concat("camera ", i);
+        camera.name = baseName;
+        for (int n = 2; !names.insert(camera.name).second; ++n)
+            camera.name = concat(baseName, " (", n, ")");  // presets need unique names
+        if (c->mHorizontalFOV <= 0.0f && c->mOrthographicWidth > 0.0f) {
+            logWarn(concat(source, ": camera '", camera.name,
+                           "' is orthographic, which vct does not support; skipped"));
+            continue;
+        }
+        const glm::dmat4* node = findNode(byName, c->mName);
+        if (!node)
+            logWarn(concat(source, ": camera '", camera.name,
+                           "' has no node of the same name; using it untransformed"));
+        const glm::dmat4 world = node ? *node : glm::dmat4(1.0);
+        // glTF cameras sit at their node's origin; assimp < 5.3 also copies the node's
+        // translation into mPosition (applying the node would then count it twice).
+        const glm::dvec3 local = gltf ? glm::dvec3(0.0) : toDouble(c->mPosition);
+        camera.eye = transformPoint(world, local);
+        const glm::dvec3 forward = transformDirection(world, toDouble(c->mLookAt));
+        camera.target = camera.eye + targetDistance * glm::normalize(forward);
+        camera.up = glm::normalize(transformDirection(world, toDouble(c->mUp)));
+
+        // Vertical field of view. glTF stores yfov; assimp hands over a "horizontal" angle:
+        // 5.2 computes yfov·aspect (wrong, but exactly invertible), ≥ 5.3 the true full
+        // horizontal angle 2·atan(tan(yfov/2)·aspect). Other formats: the full horizontal angle.
+        const double hfov = c->mHorizontalFOV;
+        const double aspect = c->mAspect > 0.0f ? double(c->mAspect) : 0.0;
+        double fovY = hfov;
+        if (aspect > 0.0) {
+            if (gltf && !assimpAtLeast(5, 3))
+                fovY = hfov / aspect;
+            else
+                fovY = 2.0 * std::atan(std::tan(0.5 * hfov) / aspect);
+        }
+        camera.fovYDeg = glm::degrees(fovY);
+        try {
+            validateCamera(camera);
+        } catch (const Error& e) {
+            logWarn(concat(source, ": skipped a camera: ", e.what()));
+            continue;
+        }
+        scene.cameras.push_back(camera);
+    }
+}
+
+// Lights. vct has directional lights (irradiance, W/m²) and spot lights (intensity, W/sr, with
+// inverse-square falloff). Conversion from what assimp delivers:
+//   * assimp multiplies glTF's `intensity` into the colour; we split it again into a scalar
+//     (the largest RGB component) and a tint (colour / scalar, so max component = 1).
+//   * glTF's photometric values are taken as the matching radiometric ones: lux → W/m²,
+//     candela → W/sr (no 683 lm/W factor). This keeps the file's light balance; the scene's
+//     exposureEV is derived from the brightest light, so the picture is exposed either way.
+//   * KHR_lights_punctual spots fall off as 1/d² (assimp: quadratic attenuation 1), exactly
+//     like ours; a pure quadratic factor q ≠ 1 divides the intensity, any constant or linear
+//     term (other formats) is replaced by the inverse-square law with a warning. glTF `range`
+//     is ignored.
+//   * glTF cone angles are half-angles in radians (assimp passes them through); we use them as
+//     half-angles in degrees, the outer one capped just below 90°.
+//   * point, ambient and area lights have no vct equivalent: skipped with a warning.
+void importLights(const aiScene& ai, const std::unordered_map<std::string, glm::dmat4>& byName,
+                  bool gltf, const std::string& source, Scene& scene) {
+    for (unsigned i = 0; i < ai.mNumLights; ++i) {
+        const aiLight* l = ai.mLights[i];
+        if (!l) continue;
+        const std::string name =
+            l->mName.length > 0 ? std::string(l->mName.C_Str()) : concat("light ", i);
+        const std::string what = concat(source, ": light '", name, "'");
+        if (l->mType != aiLightSource_DIRECTIONAL && l->mType != aiLightSource_SPOT) {
+            logWarn(concat(what, " is a point, ambient or area light, which vct does not "
+                                 "support (only directional and spot lights); skipped"));
+            continue;
+        }
+        const glm::dmat4* node = findNode(byName, l->mName);
+        const glm::dmat4 world = node ? *node : glm::dmat4(1.0);
+
+        Light light;
+        const glm::dvec3 colour{l->mColorDiffuse.r, l->mColorDiffuse.g, l->mColorDiffuse.b};
+        const double scalar = std::max({colour.x, colour.y, colour.z});
+        if (!(scalar > 0.0) || !std::isfinite(scalar)) {
+            logWarn(concat(what, " has colour × intensity (", colour.x, ", ", colour.y, ", ",
+                           colour.z, "), so it emits nothing; skipped"));
+            continue;
+        }
+        light.color = colour / scalar;
+        light.direction = transformDirection(world, toDouble(l->mDirection));
+        if (glm::length(light.direction) > 0.0) light.direction = glm::normalize(light.direction);
+
+        if (l->mType == aiLightSource_DIRECTIONAL) {
+            light.type = LightType::Directional;
+            light.irradiance = scalar;
+        } else {
+            light.type = LightType::Spot;
+            light.position = transformPoint(world, gltf ? glm::dvec3(0.0) : toDouble(l->mPosition));
+            light.intensity = scalar;
+            const double a0 = l->mAttenuationConstant, a1 = l->mAttenuationLinear,
+                         a2 = l->mAttenuationQuadratic;
+            if (a0 == 0.0 && a1 == 0.0 && a2 > 0.0 && std::isfinite(a2)) {
+                light.intensity /= a2;
+            } else {
+                logWarnOnce(what + ":attenuation",
+                            concat(what, ": attenuation 1/(", a0, " + ", a1, "·d + ", a2,
+                                   "·d²) replaced by the inverse-square law 1/d²"));
+            }
+            light.innerAngleDeg = glm::degrees(double(l->mAngleInnerCone));
+            light.outerAngleDeg = glm::degrees(double(l->mAngleOuterCone));
+            if (light.outerAngleDeg >= 90.0) {
+                logWarn(concat(what, ": outer cone angle ", light.outerAngleDeg,
+                               "° capped to 89.9°"));
+                light.outerAngleDeg = 89.9;
+            }
+            light.innerAngleDeg = std::min(light.innerAngleDeg, light.outerAngleDeg);
+        }
+        try {
+            validateLight(light, what);
+        } catch (const Error& e) {
+            logWarn(concat("skipped a light: ", e.what()));
+            continue;
+        }
+        scene.lights.push_back(light);
+    }
+}
+
+// An exposure that maps a surface of albedo 0.5 facing the brightest light to ≈ 0.8.
+double exposureFor(const std::vector<Light>& lights, const Bounds& bounds) {
+    double brightest = 0.0;
+    for (const Light& light : lights) {
+        const double tint = std::max({light.color.x, light.color.y, light.color.z});
+        if (light.type == LightType::Directional) {
+            brightest = std::max(brightest, light.irradiance * tint);
+        } else {
+            const double d = std::max(glm::length(light.position - bounds.centre()),
+                                      1e-3 * glm::length(bounds.size()));
+            if (d > 0.0) brightest = std::max(brightest, light.intensity * tint / (d * d));
+        }
+    }
+    if (!(brightest > 0.0) || !std::isfinite(brightest)) return 0.0;
+    const double radiance = 0.5 / std::numbers::pi * brightest;
+    return std::round(2.0 * std::log2(0.8 / radiance)) / 2.0;  // nearest half stop
+}
+
+}  // namespace
+
+// ------------------------------------------------------------------------------------------------
+
+Scene loadModelFile(const fs::path& path, const LoadOptions& options) {
+    std::error_code ec;
+    if (!fs::exists(path, ec))
+        fail("model file '", path.string(),
+             "' not found; check the path, or use --scene cornell|sponza");
+    if (fs::is_directory(path, ec))
+        fail("model path '", path.string(),
+             "' is a folder, not a model file; give the .gltf/.glb/.obj file inside it");
+    const std::string source = path.string();
+
+    Assimp::Importer importer;
+    // Triangulate polygons; generate normals where the file has none; share identical vertices;
+    // split meshes by primitive type so that points and lines can be counted and skipped. Node
+    // transforms are applied below, in double precision (not aiProcess_PreTransformVertices).
+    const unsigned flags = aiProcess_Triangulate | aiProcess_GenSmoothNormals |
+                           aiProcess_JoinIdenticalVertices | aiProcess_SortByPType;
+    const aiScene* ai = nullptr;
+    try {
+        ai = importer.ReadFile(source, flags);
+    } catch (const std::exception& e) {
+        fail("cannot read model '", source, "': ", e.what());
+    }
+    if (!ai)
+        fail("cannot read model '", source, "': ", importer.GetErrorString(),
+             " (a glTF 2.0, GLB or OBJ file is expected)");
+    if (!ai->mRootNode)
+        fail("cannot read model '", source, "': the file has no scene graph");
+
+    const bool gltf = isGltf(path);
+    const std::vector<FlatNode> nodes = flattenNodes(*ai);
+
+    Scene scene;
+    scene.name = path.filename().string();
+    scene.sourcePath = fs::absolute(path, ec).lexically_normal().string();
+    if (scene.sourcePath.empty()) scene.sourcePath = source;
+
+    WorldGeometry geometry;
+    std::vector<std::uint32_t> usedMaterials;
+    gatherGeometry(*ai, nodes, source, geometry, usedMaterials);
+    importMaterials(*ai, usedMaterials, path, scene);
+    buildSceneGeometry(geometry, source, options.sanitize, scene);
+
+    std::unordered_map<std::string, glm::dmat4> byName;  // first node of each name
+    for (const FlatNode& n : nodes) byName.emplace(n.node->mName.C_Str(), n.world);
+    importCameras(*ai, byName, gltf, source, scene);
+    if (scene.cameras.empty()) scene.cameras.push_back(defaultCamera(scene.worldBounds));
+
+    importLights(*ai, byName, gltf, source, scene);
+    if (scene.lights.empty()) {
+        scene.lights.push_back(defaultSun());
+        scene.exposureEV = 0.0;
+    } else {
+        scene.exposureEV = exposureFor(scene.lights, scene.worldBounds);
+    }
+    return scene;
+}
+
+// ------------------------------------------------------------------------------------------------
+// Asset search path
+
+namespace {
+
+std::vector<fs::path> assetRoots() {
+    std::vector<fs::path> roots;
+    if (const char* env = std::getenv("VCT_ASSET_DIR"); env && *env) roots.emplace_back(env);
+    roots.emplace_back("assets");
+    roots.emplace_back(fs::path(VCT_SOURCE_DIR) / "assets");
+    roots.emplace_back(fs::path("..") / "shared" / "assets");
+    roots.emplace_back(fs::path(VCT_SOURCE_DIR) / ".." / "shared" / "assets");
+    return roots;
+}
+
+}  // namespace
+
+std::optional<fs::path> findAsset(const fs::path& relative) {
+    for (const fs::path& root : assetRoots()) {
+        const fs::path candidate = root / relative;
+        std::error_code ec;
+        if (fs::is_regular_file(candidate, ec))
+            return fs::absolute(candidate, ec).lexically_normal();
+    }
+    return std::nullopt;
+}
+
+std::string assetSearchPathDescription() {
+    const char* env = std::getenv("VCT_ASSET_DIR");
+    std::string text = (env && *env) ? concat("$VCT_ASSET_DIR=", env) : "$VCT_ASSET_DIR (unset)";
+    const std::vector<fs::path> roots = assetRoots();
+    for (std::size_t i = (env && *env) ? 1 : 0; i < roots.size(); ++i)
+        text += ", " + roots[i].lexically_normal().string();
+    return text;
+}
+
+// ------------------------------------------------------------------------------------------------
+// --scene values
+
+namespace {
+
+Scene loadSponza(const LoadOptions& options) {
+    const std::optional<fs::path> path = findAsset(fs::path("sponza") / "Sponza.gltf");
+    if (!path)
+        fail("Sponza not found in the asset search path (", assetSearchPathDescription(),
+             "); run assets/fetch_sponza.sh or set VCT_ASSET_DIR");
+    Scene scene = loadModelFile(*path, options);
+    scene.name = "sponza";
+
+    // The file's four cameras (CameraMain, CameraAlternate, CameraBalcony, CameraAlcove) are
+    // the presets, CameraMain first.
+    std::stable_partition(scene.cameras.begin(), scene.cameras.end(),
+                          [](const Camera& c) { return c.name == "CameraMain"; });
+
+    // Sponza is y-up, its long axis along x, open to the sky above the atrium. The sun comes
+    // down steeply, slightly along +x and +z, so it lights a strip of the floor and the lower
+    // walls through the roof opening while the galleries stay in shadow (indirect light only).
+    Light sun;
+    sun.type = LightType::Directional;
+    sun.direction = glm::normalize(glm::dvec3(0.25, -1.0, 0.12));
+    sun.irradiance = 10.0;  // W/m²
+    scene.lights = {sun};
+    // A lit floor of albedo ~0.5 reflects L = 0.5/π · 10 · cosθ ≈ 1.5 W/(m²·sr); 2^-1 maps it to
+    // ≈ 0.8 before tone mapping.
+    scene.exposureEV = -1.0;
+    return scene;
+}
+
+}  // namespace
+
+Scene loadScene(const std::string& sceneSpec, const LoadOptions& options) {
+    if (sceneSpec.empty())
+        fail("no scene given; use --scene cornell, --scene sponza or --scene <model file>");
+    if (sceneSpec == "cornell") return makeCornellBox();
+    if (sceneSpec == "sponza") return loadSponza(options);
+    return loadModelFile(sceneSpec, options);
+}
+
+}  // namespace vct
