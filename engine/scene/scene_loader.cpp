@@ -99,8 +99,81 @@ std::vector<FlatNode> flattenNodes(const aiScene& ai) {
 // ------------------------------------------------------------------------------------------------
 // Geometry
 
+// Non-finite vertex positions must be found before aiProcess_JoinIdenticalVertices: its
+// epsilon comparisons are false for NaN, so it silently merges a NaN vertex into a neighbour
+// and the model renders with a wrong triangle instead of failing. So the file is read without
+// that step, checked here, and the step applied afterwards.
+struct NonFiniteScan {
+    std::size_t vertices = 0;           // source vertices with a NaN/Inf position
+    std::size_t droppedTriangles = 0;   // triangles removed (counted per instance), sanitize only
+};
+
+NonFiniteScan removeNonFinitePositions(aiScene& ai, const std::vector<FlatNode>& nodes,
+                                       const std::string& source, bool sanitize) {
+    std::vector<std::size_t> instances(ai.mNumMeshes, 0);
+    for (const FlatNode& flat : nodes)
+        for (unsigned k = 0; k < flat.node->mNumMeshes; ++k)
+            if (flat.node->mMeshes[k] < ai.mNumMeshes) ++instances[flat.node->mMeshes[k]];
+
+    NonFiniteScan scan;
+    std::string first;
+    for (unsigned m = 0; m < ai.mNumMeshes; ++m) {
+        aiMesh* mesh = ai.mMeshes[m];
+        if (!mesh || !mesh->mVertices || instances[m] == 0) continue;
+        std::vector<char> bad(mesh->mNumVertices, 0);
+        std::size_t badHere = 0;
+        for (unsigned v = 0; v < mesh->mNumVertices; ++v) {
+            const aiVector3D& p = mesh->mVertices[v];
+            if (std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z)) continue;
+            bad[v] = 1;
+            ++badHere;
+            if (first.empty())
+                first = concat("mesh '",
+                               mesh->mName.length > 0 ? std::string(mesh->mName.C_Str())
+                                                      : concat("mesh ", m),
+                               "' vertex ", v);
+        }
+        if (badHere == 0) continue;
+        scan.vertices += badHere;
+        if (!sanitize) continue;
+
+        // Drop the faces that use a bad vertex; park the bad positions at 0 (now unused).
+        auto usesBad = [&](const aiFace& f) {
+            for (unsigned c = 0; c < f.mNumIndices; ++c)
+                if (f.mIndices[c] < mesh->mNumVertices && bad[f.mIndices[c]]) return true;
+            return false;
+        };
+        unsigned keep = 0;
+        for (unsigned f = 0; f < mesh->mNumFaces; ++f) keep += usesBad(mesh->mFaces[f]) ? 0 : 1;
+        aiFace* kept = new aiFace[std::max(keep, 1u)];
+        unsigned k = 0;
+        for (unsigned f = 0; f < mesh->mNumFaces; ++f) {
+            aiFace& face = mesh->mFaces[f];
+            if (usesBad(face)) {
+                if (face.mNumIndices == 3) scan.droppedTriangles += instances[m];
+                continue;
+            }
+            std::swap(kept[k].mNumIndices, face.mNumIndices);
+            std::swap(kept[k].mIndices, face.mIndices);
+            ++k;
+        }
+        delete[] mesh->mFaces;
+        mesh->mFaces = kept;
+        mesh->mNumFaces = keep;
+        for (unsigned v = 0; v < mesh->mNumVertices; ++v)
+            if (bad[v]) mesh->mVertices[v] = aiVector3D(0.0f, 0.0f, 0.0f);
+    }
+    if (scan.vertices > 0 && !sanitize)
+        fail(source, ": ", scan.vertices, " vertices have non-finite (NaN/Inf) positions (first: ",
+             first, "); fix the model or pass --sanitize to drop the triangles that use them");
+    if (scan.droppedTriangles > 0)
+        logWarn(concat(source, ": dropped ", scan.droppedTriangles, " triangles that use the ",
+                       scan.vertices, " vertices with non-finite positions (--sanitize)"));
+    return scan;
+}
+
 void gatherGeometry(const aiScene& ai, const std::vector<FlatNode>& nodes,
-                    const std::string& source, WorldGeometry& g,
+                    const std::string& source, std::size_t droppedEarlier, WorldGeometry& g,
                     std::vector<std::uint32_t>& usedMaterials) {
     std::unordered_map<std::uint32_t, std::uint32_t> materialSlot;  // ai index -> scene index
     std::size_t ignoredPrimitives = 0;
@@ -182,6 +255,9 @@ void gatherGeometry(const aiScene& ai, const std::vector<FlatNode>& nodes,
         if (ai.mNumMeshes == 0)
             fail(source, ": the model has no triangles (the file contains no meshes; is it a "
                          "valid model file?)");
+        if (droppedEarlier > 0)
+            fail(source, ": the model has no triangles (all ", droppedEarlier,
+                 " were dropped for non-finite positions)");
         fail(source, ": the model has no triangles (", ai.mNumMeshes, " meshes, ",
              ignoredPrimitives, " point/line primitives, no triangle faces in the scene graph)");
     }
@@ -383,14 +459,13 @@ Scene loadModelFile(const fs::path& path, const LoadOptions& options) {
     const std::string source = path.string();
 
     Assimp::Importer importer;
-    // Triangulate polygons; generate normals where the file has none; share identical vertices;
-    // split meshes by primitive type so that points and lines can be counted and skipped. Node
-    // transforms are applied below, in double precision (not aiProcess_PreTransformVertices).
-    const unsigned flags = aiProcess_Triangulate | aiProcess_GenSmoothNormals |
-                           aiProcess_JoinIdenticalVertices | aiProcess_SortByPType;
+    // Triangulate polygons and split meshes by primitive type (so that points and lines can be
+    // counted and skipped); then, once non-finite positions are dealt with, share identical
+    // vertices and generate normals where the file has none. Node transforms are applied below,
+    // in double precision (not aiProcess_PreTransformVertices).
     const aiScene* ai = nullptr;
     try {
-        ai = importer.ReadFile(source, flags);
+        ai = importer.ReadFile(source, aiProcess_Triangulate | aiProcess_SortByPType);
     } catch (const std::exception& e) {
         fail("cannot read model '", source, "': ", e.what());
     }
@@ -399,6 +474,17 @@ Scene loadModelFile(const fs::path& path, const LoadOptions& options) {
              " (a glTF 2.0, GLB or OBJ file is expected)");
     if (!ai->mRootNode)
         fail("cannot read model '", source, "': the file has no scene graph");
+
+    const NonFiniteScan nonFinite = removeNonFinitePositions(
+        *const_cast<aiScene*>(ai), flattenNodes(*ai), source, options.sanitize);
+    try {
+        ai = importer.ApplyPostProcessing(aiProcess_JoinIdenticalVertices |
+                                          aiProcess_GenSmoothNormals);
+    } catch (const std::exception& e) {
+        fail("cannot read model '", source, "': ", e.what());
+    }
+    if (!ai || !ai->mRootNode)
+        fail("cannot read model '", source, "': ", importer.GetErrorString());
 
     const bool gltf = isGltf(path);
     const std::vector<FlatNode> nodes = flattenNodes(*ai);
@@ -410,9 +496,12 @@ Scene loadModelFile(const fs::path& path, const LoadOptions& options) {
 
     WorldGeometry geometry;
     std::vector<std::uint32_t> usedMaterials;
-    gatherGeometry(*ai, nodes, source, geometry, usedMaterials);
+    gatherGeometry(*ai, nodes, source, nonFinite.droppedTriangles, geometry, usedMaterials);
     importMaterials(*ai, usedMaterials, path, scene);
     buildSceneGeometry(geometry, source, options.sanitize, scene);
+    scene.report.sourceTriangles += nonFinite.droppedTriangles;
+    scene.report.droppedTriangles += nonFinite.droppedTriangles;
+    scene.report.nonFinitePositions += nonFinite.vertices;
 
     std::unordered_map<std::string, glm::dmat4> byName;  // first node of each name
     for (const FlatNode& n : nodes) byName.emplace(n.node->mName.C_Str(), n.world);
