@@ -11,6 +11,7 @@ layout(binding = 1) uniform sampler2D uNormal;
 layout(binding = 2) uniform sampler2D uPosition;
 layout(binding = 3) uniform sampler2D uEmissive;
 layout(binding = 4) uniform sampler2D uDirect;
+layout(binding = 5) uniform sampler2D uDebugImage;  // a debug view's linear colour, shown as it is
 layout(rgba32f, binding = 0) uniform writeonly image2D uHdr;
 layout(rgba8, binding = 1) uniform writeonly image2D uLdr;
 
@@ -26,6 +27,7 @@ uniform int uToneCurve;
 uniform vec3 uEye;
 uniform vec3 uForward;
 uniform float uDepthScale;   // depth shown as white in the 8-bit depth view
+uniform int uShowDebugImage;
 
 void main() {
     ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
@@ -34,7 +36,11 @@ void main() {
     bool sky = position.w <= 0.0;
     vec3 hdr;
     vec3 ldr;
-    if (uAov == AOV_ALBEDO) {
+    if (uShowDebugImage != 0) {
+        hdr = texelFetch(uDebugImage, pixel, 0).rgb;
+        ldr = linearToSrgb(hdr);
+        sky = false;
+    } else if (uAov == AOV_ALBEDO) {
         hdr = sky ? vec3(0.0) : texelFetch(uAlbedo, pixel, 0).rgb;
         ldr = linearToSrgb(hdr);
     } else if (uAov == AOV_NORMAL) {

@@ -23,3 +23,13 @@ vec3 facingNormal(vec3 interpolated, vec3 position, vec3 towards) {
     n = normalize(n);
     return dot(n, towards) < 0.0 ? -n : n;
 }
+
+// Base colour with explicit texture derivatives, for passes without screen-space derivatives
+// (voxelization samples at a clipped-polygon centroid). Does not discard: the caller decides.
+vec4 materialBaseColorGrad(vec2 uv, vec2 dUvdx, vec2 dUvdy) {
+    vec4 color = uBaseColor;
+    if (uHasTexture != 0) color *= textureGrad(uBaseColorTexture, uv, dUvdx, dUvdy);
+    return color;
+}
+
+bool materialCutsAway(float alpha) { return uAlphaCutoff >= 0.0 && alpha < uAlphaCutoff; }

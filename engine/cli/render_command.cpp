@@ -28,6 +28,10 @@ struct RenderOptions {
     int lightViewResolution = 2048;
     int pcfRadius = 1;
     int frames = 1;
+    std::string view = "lit";
+    int voxelLevels = 8;
+    int voxelViewLevel = 0;
+    bool noBricks = false;
 };
 
 void run(const RenderOptions& o) {
@@ -44,6 +48,10 @@ void run(const RenderOptions& o) {
     settings.pcfRadius = o.pcfRadius;
     settings.display.aov = parseAov(o.aov);
     settings.display.toneCurve = parseToneCurve(o.toneCurve);
+    settings.view = parseViewMode(o.view);
+    settings.voxelLevels = o.voxelLevels;
+    settings.voxelViewLevel = o.voxelViewLevel;
+    settings.bricks = !o.noBricks;
     if (o.width < 1 || o.height < 1 || o.width > 16384 || o.height > 16384)
         fail("image size ", o.width, "x", o.height, " is out of range; --width and --height must be within 1..16384");
 
@@ -63,7 +71,11 @@ void run(const RenderOptions& o) {
     writePng(o.out, renderer.readLdr());
     if (!o.hdrOut.empty()) writeHdrImage(o.hdrOut, hdr);
 
-    TimingsReport report{context->info(), o.width, o.height, {}, renderer.memory()};
+    TimingsReport report{context->info(), o.width, o.height, {}, renderer.memory(), std::nullopt};
+    if (renderer.octree()) {
+        report.voxels = renderer.octree()->memory();
+        if (logLevel() >= LogLevel::Info) std::printf("%s", formatVoxelMemory(*report.voxels).c_str());
+    }
     if (auto timings = renderer.timer().waitForLatest()) report.timings = *timings;
     if (logLevel() >= LogLevel::Info) std::printf("%s", formatTimingsTable(report).c_str());
     if (!o.timingsOut.empty()) writeTimingsJson(o.timingsOut, report);
@@ -93,6 +105,13 @@ Run addRenderCommand(CLI::App& app) {
         ->capture_default_str();
     command->add_option("--frames", o.frames, "render this many frames; timings are the last frame's")
         ->capture_default_str();
+    command->add_option("--view", o.view, "lit (the lit image) or voxels (the octree, unlit albedo)")
+        ->capture_default_str();
+    command->add_option("--voxel-levels", o.voxelLevels, "octree resolution 2^L voxels per axis, L in 5..10")
+        ->capture_default_str();
+    command->add_option("--voxel-level", o.voxelViewLevel,
+                        "octree level shown by --view voxels (1..L; default L, the voxels themselves)");
+    command->add_flag("--no-bricks", o.noBricks, "voxel view: raw node values instead of filtered bricks");
     return [options] { run(*options); };
 }
 

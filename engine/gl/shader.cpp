@@ -104,9 +104,9 @@ std::string mapShaderLog(const std::string& log, const std::vector<std::string>&
     while (std::getline(lines, line)) {
         std::smatch m;
         if (std::regex_search(line, m, mesa) && m.position(0) == 0)
-            line = fileName(m[1]) + ":" + m[2].str() + ":" + m[3].str() + ":" + m.suffix().str();
+            line = fileName(m[1]) + ":" + m[2].str() + ":" + m[3].str() + m.suffix().str();
         else if (std::regex_search(line, m, nvidia) && m.position(0) == 0)
-            line = fileName(m[1]) + ":" + m[2].str() + ":" + m.suffix().str();
+            line = fileName(m[1]) + ":" + m[2].str() + m.suffix().str();
         result += line + "\n";
     }
     return result;
@@ -154,6 +154,9 @@ void setUniform(GLuint p, const char* n, const glm::vec4& v) {
 }
 void setUniform(GLuint p, const char* n, const glm::ivec2& v) {
     glProgramUniform2iv(p, glGetUniformLocation(p, n), 1, glm::value_ptr(v));
+}
+void setUniform(GLuint p, const char* n, const glm::ivec3& v) {
+    glProgramUniform3iv(p, glGetUniformLocation(p, n), 1, glm::value_ptr(v));
 }
 void setUniform(GLuint p, const char* n, const glm::mat3& v) {
     glProgramUniformMatrix3fv(p, glGetUniformLocation(p, n), 1, GL_FALSE, glm::value_ptr(v));

@@ -42,6 +42,7 @@ void setUniform(GLuint program, const char* name, const glm::vec2& value);
 void setUniform(GLuint program, const char* name, const glm::vec3& value);
 void setUniform(GLuint program, const char* name, const glm::vec4& value);
 void setUniform(GLuint program, const char* name, const glm::ivec2& value);
+void setUniform(GLuint program, const char* name, const glm::ivec3& value);
 void setUniform(GLuint program, const char* name, const glm::mat3& value);
 void setUniform(GLuint program, const char* name, const glm::mat4& value);
 

@@ -4,6 +4,12 @@
 
 namespace vct {
 
+ViewMode parseViewMode(const std::string& name) {
+    if (name == "lit") return ViewMode::Lit;
+    if (name == "voxels") return ViewMode::Voxels;
+    fail("unknown --view '", name, "'; use lit or voxels");
+}
+
 void validateRenderSettings(const RenderSettings& s) {
     GLint maxTexture = 0, maxViewport[2] = {0, 0};
     glGetIntegerv(GL_MAX_TEXTURE_SIZE, &maxTexture);
@@ -16,6 +22,11 @@ void validateRenderSettings(const RenderSettings& s) {
     if (s.lightViewResolution < 16 || s.lightViewResolution > maxTexture)
         fail("--light-view-res ", s.lightViewResolution, " is out of range; use 16..", maxTexture);
     if (s.pcfRadius < 0 || s.pcfRadius > 8) fail("--pcf-radius ", s.pcfRadius, " is out of range; use 0..8");
+    if (s.voxelLevels < kMinVoxelLevels || s.voxelLevels > kMaxVoxelLevels)
+        fail("--voxel-levels ", s.voxelLevels, " is out of range; use ", kMinVoxelLevels, "..", kMaxVoxelLevels);
+    if (s.voxelViewLevel < 0 || s.voxelViewLevel > s.voxelLevels)
+        fail("--voxel-level ", s.voxelViewLevel, " is out of range; use 1..", s.voxelLevels, " (", s.voxelLevels,
+             " = the voxels themselves)");
 }
 
 Renderer::Renderer(const Scene& scene, const RenderSettings& settings)
@@ -30,9 +41,31 @@ Renderer::Renderer(const Scene& scene, const RenderSettings& settings)
     gl::checkErrors("creating the renderer's GPU resources");
 }
 
+void Renderer::buildOctree() {
+    if (!svo_) svo_ = std::make_unique<SvoBuilder>();
+    svo_->build(gpuScene_, scene_, settings_.voxelLevels, timer_);
+}
+
 void Renderer::renderFrame(const Camera& camera) {
     const ViewTransform view = cameraView(camera, scene_, settings_.width, settings_.height);
     timer_.beginFrame();
+    if (settings_.view == ViewMode::Voxels) {
+        // Only the octree and the march: no lighting work for a view that shows none.
+        if (!svo_) buildOctree();
+        if (!voxelView_) voxelView_ = std::make_unique<VoxelView>(settings_.width, settings_.height);
+        {
+            gl::GpuTimer::Scope pass(timer_, "voxel_view");
+            const int level = settings_.voxelViewLevel ? settings_.voxelViewLevel : settings_.voxelLevels;
+            voxelView_->render(svo_->octree(), camera, scene_, level, settings_.bricks);
+        }
+        {
+            gl::GpuTimer::Scope pass(timer_, "composite");
+            composite_.render(gbuffer_, direct_.radiance(), view, 1.0f, settings_.display, voxelView_->image());
+        }
+        timer_.endFrame();
+        gl::checkErrors("rendering the voxel view");
+        return;
+    }
     {
         gl::GpuTimer::Scope pass(timer_, "light_view");
         for (std::size_t i = 0; i < scene_.lights.size(); ++i) lightViews_[i].render(gpuScene_, scene_, scene_.lights[i]);
@@ -62,6 +95,15 @@ std::vector<MemoryPool> Renderer::memory() const {
     std::size_t lightBytes = 0;
     for (const auto& map : lightViews_) lightBytes += map.bytes();
     pools.push_back({"light-view maps", lightBytes});
+    if (svo_) {
+        const VoxelMemoryReport voxels = svo_->memory();
+        pools.push_back({"voxel fragment list", voxels.fragmentList});
+        pools.push_back({"octree node pool", voxels.nodePool});
+        pools.push_back({"octree neighbour links", voxels.neighbourLinks});
+        pools.push_back({"octree voxel values", voxels.cells});
+        pools.push_back({"brick pool", voxels.brickPools});
+    }
+    if (voxelView_) pools.push_back({"voxel view", voxelView_->bytes()});
     return pools;
 }
 

@@ -46,6 +46,21 @@ void writeTimingsJson(const std::filesystem::path& path, const TimingsReport& re
         total += pool.bytes;
     }
     json["memory_total_bytes"] = total;
+    if (report.voxels) {
+        const VoxelMemoryReport& v = *report.voxels;
+        json["voxels"] = {{"levels", int(v.nodesPerLevel.size()) - 1},
+                          {"fragments", v.fragments},
+                          {"fragment_list_regrowths", v.fragmentListRegrowths},
+                          {"max_fragments_in_voxel", v.maxFragmentsInCell},
+                          {"nodes_per_level", v.nodesPerLevel},
+                          {"bytes",
+                           {{"fragment_list", v.fragmentList},
+                            {"node_pool", v.nodePool},
+                            {"neighbour_links", v.neighbourLinks},
+                            {"voxel_values", v.cells},
+                            {"brick_pool", v.brickPools},
+                            {"dense_texture_equivalent", v.denseTexture}}}};
+    }
     std::ofstream file(path);
     file << json.dump(2) << "\n";
     if (!file) fail("cannot write timings to '", path.string(), "'");

@@ -6,13 +6,20 @@
 //     "passes": [ { "name": str, "gpu_ms": num, "cpu_ms": num } ],   in execution order
 //     "total_gpu_ms": num,       GPU time from the first pass's start to the last pass's end
 //     "total_cpu_ms": num,       sum of the passes' CPU submission times
-//     "memory": [ { "name": str, "bytes": int } ], "memory_total_bytes": int }
+//     "memory": [ { "name": str, "bytes": int } ], "memory_total_bytes": int,
+//     "voxels": {              only when the frame built the octree
+//        "levels": int, "fragments": int, "fragment_list_regrowths": int, "max_fragments_in_voxel": int,
+//        "nodes_per_level": [int],  levels 0..L, the last = occupied voxels
+//        "bytes": { "fragment_list", "node_pool", "neighbour_links", "voxel_values", "brick_pool",
+//                   "dense_texture_equivalent" } } }
 #include <filesystem>
 #include <string>
 #include <vector>
 
 #include "gl/context.hpp"
 #include "gl/gpu_timer.hpp"
+#include <optional>
+
 #include "pipeline/renderer.hpp"
 
 namespace vct {
@@ -23,6 +30,7 @@ struct TimingsReport {
     int height = 0;
     gl::FrameTimings timings;
     std::vector<MemoryPool> memory;
+    std::optional<VoxelMemoryReport> voxels;
 };
 
 std::string formatTimingsTable(const TimingsReport& report);

@@ -43,7 +43,7 @@ Composite::Composite(int width, int height)
       program_(gl::buildProgram({{GL_COMPUTE_SHADER, "composite.comp"}})) {}
 
 void Composite::render(const GBuffer& gbuffer, GLuint directRadiance, const ViewTransform& camera, float depthScale,
-                       const DisplaySettings& display) {
+                       const DisplaySettings& display, GLuint debugImage) {
     const GLuint p = program_.id();
     glUseProgram(p);
     glBindTextureUnit(0, gbuffer.albedo());
@@ -51,6 +51,8 @@ void Composite::render(const GBuffer& gbuffer, GLuint directRadiance, const View
     glBindTextureUnit(2, gbuffer.position());
     glBindTextureUnit(3, gbuffer.emissive());
     glBindTextureUnit(4, directRadiance);
+    glBindTextureUnit(5, debugImage);
+    gl::setUniform(p, "uShowDebugImage", debugImage != 0 ? 1 : 0);
     glBindImageTexture(0, hdr_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
     glBindImageTexture(1, ldr_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA8);
     gl::setUniform(p, "uAov", int(display.aov));

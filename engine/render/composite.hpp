@@ -25,8 +25,9 @@ struct DisplaySettings {
 class Composite {
 public:
     Composite(int width, int height);
+    // `debugImage` (0 = none): a debug view's colour, shown instead of the lit image.
     void render(const GBuffer& gbuffer, GLuint directRadiance, const ViewTransform& camera, float depthScale,
-                const DisplaySettings& display);
+                const DisplaySettings& display, GLuint debugImage = 0);
 
     ImageF readHdr() const;  // rows top to bottom
     Image8 readLdr() const;

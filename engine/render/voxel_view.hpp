@@ -1,0 +1,23 @@
+#pragma once
+// Debug view `--view voxels`: the octree at one level, ray-marched from the camera, unlit albedo
+// composited with opacity, from the filtered bricks or from raw node values (`--no-bricks`).
+#include "gl/objects.hpp"
+#include "render/view.hpp"
+#include "voxel/octree.hpp"
+
+namespace vct {
+
+class VoxelView {
+public:
+    VoxelView(int width, int height);
+    void render(const Octree& octree, const Camera& camera, const Scene& scene, int level, bool useBricks);
+    GLuint image() const { return image_.id(); }
+    std::size_t bytes() const { return std::size_t(width_) * height_ * 16; }
+
+private:
+    int width_, height_;
+    gl::Texture image_;
+    gl::Program program_;
+};
+
+}  // namespace vct

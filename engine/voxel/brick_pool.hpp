@@ -1,0 +1,31 @@
+#pragma once
+// The 3D-texture brick pool and the step both brick passes end with: turning one level's partial
+// bricks into complete samples in the pool (brick_layout.hpp, shaders/bricks_complete.comp).
+#include "voxel/octree.hpp"
+
+namespace vct {
+
+// Partial bricks of one level: 27 RGBA32F texels per node, in the level's node order.
+struct PartialBricks {
+    int level = -1;
+    gl::Buffer data;
+    gl::Texture texture;
+};
+
+PartialBricks createPartialBricks(const Octree& octree, int level);
+
+// Allocates octree.brickAlbedo with one brick per node (levels 0..L−1) and octree.rawValue.
+void allocateBrickPool(Octree& octree);
+
+class BrickCompletion {
+public:
+    BrickCompletion();
+    void run(const Octree& octree, const PartialBricks& partial);
+
+private:
+    gl::Program program_;
+};
+
+void setBrickPoolUniforms(GLuint program, const Octree& octree);
+
+}  // namespace vct

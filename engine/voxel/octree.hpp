@@ -1,0 +1,67 @@
+#pragma once
+// The sparse voxel octree's GPU data (layout documented in shaders/octree.glsl) and the fragment
+// list it is built from. Filled by the passes voxelize → svo_build → svo_leaves → svo_neighbours
+// → bricks → bricks_mip; read by the debug view and, later, by the GI passes.
+#include <array>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "gl/objects.hpp"
+#include "voxel/voxel_grid.hpp"
+
+namespace vct {
+
+constexpr int kMaxOctreeLevels = 11;  // node levels 0..L−1 plus the cell level L, L ≤ 10
+
+// Voxel fragments: one RGBA32UI texel each (cell, albedo RGBA8, normal oct16, area float bits)
+// in a buffer texture, so the list may exceed the SSBO size limit; emission (half RGB) beside
+// it only when the scene has emissive materials.
+struct FragmentList {
+    gl::Buffer data;
+    gl::Texture dataTexture;
+    gl::Buffer emissive;
+    gl::Texture emissiveTexture;
+    gl::Buffer counter;
+    std::uint32_t count = 0;
+    std::uint32_t capacity = 0;
+    bool hasEmissive = false;
+    int regrowths = 0;  // times the list was too small and voxelization ran again
+    std::size_t bytes() const { return std::size_t(capacity) * (16 + (hasEmissive ? 8 : 0)); }
+};
+
+struct Octree {
+    VoxelGrid grid;
+    int levels = 0;  // L; nodes at levels 0..L−1, cells at level L
+    std::array<std::uint32_t, kMaxOctreeLevels + 1> levelStart{};
+    std::array<std::uint32_t, kMaxOctreeLevels + 1> levelCount{};
+    std::uint32_t nodeCount = 0;  // levels 0..L−1 (these have bricks)
+    std::uint32_t totalCount = 0;  // including the cells
+
+    // Node pool (SoA), totalCount entries each.
+    gl::Buffer child, mask, coord, parent;
+    gl::Buffer neighbours;  // 6 per node, nodeCount nodes
+
+    // Cells (level L), levelCount[L] entries each: albedo+opacity RGBA8, normal oct16, area in
+    // voxel-face units, fragment count, emission half RGB (only with emissive materials).
+    gl::Buffer cellAlbedo, cellNormal, cellArea, cellFragments, cellEmissive;
+    bool hasEmissive = false;
+
+    // Bricks: one 3³ brick per node (levels 0..L−1) in a 3D texture, brick index = node index.
+    gl::Texture brickAlbedo;  // RGBA16F, premultiplied (ρ·α, α), complete samples (brick_layout.hpp)
+    glm::ivec3 brickPoolBricks{0};  // bricks per axis
+    gl::Buffer rawValue;            // vec4 per node: mean of (ρ·α, α) over its cells
+
+    std::uint32_t cellCount() const { return levelCount[levels]; }
+    std::size_t nodePoolBytes() const { return std::size_t(totalCount) * 16; }
+    std::size_t neighbourBytes() const { return std::size_t(nodeCount) * 24; }
+    std::size_t cellBytes() const { return std::size_t(cellCount()) * (16 + (hasEmissive ? 8 : 0)); }
+    std::size_t brickPoolBytes() const;
+    // A dense RGBA16F 3D texture of the same resolution with its full mip chain (for comparison).
+    std::size_t denseTextureBytes() const;
+
+    // Binds the node buffers to the bindings of octree.glsl and sets its uniforms.
+    void bind(GLuint program) const;
+};
+
+}  // namespace vct

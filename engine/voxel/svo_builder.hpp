@@ -1,0 +1,51 @@
+#pragma once
+// Builds the sparse voxel octree of a scene, pass by pass (DESIGN §4 passes 1–6), each timed:
+// voxelize → svo_build → svo_leaves → svo_neighbours → bricks → bricks_mip.
+#include <string>
+#include <vector>
+
+#include "gl/gpu_timer.hpp"
+#include "render/gpu_scene.hpp"
+#include "voxel/bricks.hpp"
+#include "voxel/bricks_mip.hpp"
+#include "voxel/svo_build.hpp"
+#include "voxel/svo_leaves.hpp"
+#include "voxel/svo_neighbours.hpp"
+#include "voxel/voxelize.hpp"
+
+namespace vct {
+
+struct VoxelMemoryReport {
+    std::size_t fragmentList = 0, nodePool = 0, neighbourLinks = 0, cells = 0, brickPools = 0, denseTexture = 0;
+    std::uint32_t fragments = 0;
+    std::vector<std::uint32_t> nodesPerLevel;  // levels 0..L (L = occupied cells)
+    std::uint32_t maxFragmentsInCell = 0;
+    int fragmentListRegrowths = 0;
+    std::size_t total() const { return fragmentList + nodePool + neighbourLinks + cells + brickPools; }
+};
+
+class SvoBuilder {
+public:
+    SvoBuilder() = default;
+    void build(const GpuScene& gpuScene, const Scene& scene, int levels, gl::GpuTimer& timer);
+
+    const Octree& octree() const { return octree_; }
+    const FragmentList& fragments() const { return fragments_; }
+    GLuint fragmentNodeTexture() const { return build_.fragmentNodeTexture(); }
+    VoxelMemoryReport memory() const;
+
+private:
+    Voxelizer voxelizer_;
+    SvoBuild build_;
+    SvoLeaves leaves_;
+    SvoNeighbours neighbours_;
+    Bricks bricks_;
+    BricksMip bricksMip_;
+    FragmentList fragments_;
+    Octree octree_;
+    LeafStatistics leafStatistics_;
+};
+
+std::string formatVoxelMemory(const VoxelMemoryReport& report);
+
+}  // namespace vct

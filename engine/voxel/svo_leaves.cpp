@@ -1,0 +1,84 @@
+#include "voxel/svo_leaves.hpp"
+
+#include "core/error.hpp"
+#include "gl/compute.hpp"
+#include "gl/shader.hpp"
+
+namespace vct {
+namespace {
+constexpr std::uint32_t kAccumulatorFields = 16;  // ACC_FIELDS in the shaders
+}
+
+SvoLeaves::SvoLeaves()
+    : accumulate_(gl::buildProgram({{GL_COMPUTE_SHADER, "svo_leaves_accumulate.comp"}})),
+      normalize_(gl::buildProgram({{GL_COMPUTE_SHADER, "svo_leaves_normalize.comp"}})) {}
+
+LeafStatistics SvoLeaves::run(const FragmentList& fragments, GLuint fragmentNodeTexture, float maxEmission,
+                              Octree& octree) {
+    const std::uint32_t cells = octree.cellCount();
+    GLint maxTexels = 0;
+    glGetIntegerv(GL_MAX_TEXTURE_BUFFER_SIZE, &maxTexels);
+    if (std::uint64_t(cells) * kAccumulatorFields > std::uint64_t(maxTexels))
+        fail("the octree has ", cells, " occupied cells; their accumulators exceed this GPU's buffer-texture limit (",
+             maxTexels / kAccumulatorFields, " cells); lower --voxel-levels");
+    gl::Buffer accumulators =
+        gl::createBuffer(GLsizeiptr(cells) * kAccumulatorFields * 4, nullptr, GL_DYNAMIC_STORAGE_BIT, "cell accumulators");
+    const std::uint32_t zero = 0;
+    glClearNamedBufferData(accumulators.id(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
+    gl::Texture accumulatorTexture = gl::createTexture(GL_TEXTURE_BUFFER, "cell accumulators");
+    glTextureBuffer(accumulatorTexture.id(), GL_R32UI, accumulators.id());
+
+    octree.hasEmissive = fragments.hasEmissive;
+    const float emissiveScale = maxEmission > 0.0f ? 16777216.0f / maxEmission : 0.0f;
+    const GLbitfield barrier = GL_SHADER_STORAGE_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT;
+
+    GLuint p = accumulate_.id();
+    glUseProgram(p);
+    octree.bind(p);
+    gl::setUniform(p, "uFragmentCount", fragments.count);
+    gl::setUniform(p, "uHasEmissive", fragments.hasEmissive ? 1 : 0);
+    gl::setUniform(p, "uEmissiveScale", emissiveScale);
+    glBindImageTexture(0, fragments.dataTexture.id(), 0, GL_FALSE, 0, GL_READ_ONLY, GL_RGBA32UI);
+    glBindImageTexture(1, fragmentNodeTexture, 0, GL_FALSE, 0, GL_READ_ONLY, GL_R32UI);
+    if (fragments.hasEmissive)
+        glBindImageTexture(2, fragments.emissiveTexture.id(), 0, GL_FALSE, 0, GL_READ_ONLY, GL_RG32UI);
+    glBindImageTexture(3, accumulatorTexture.id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_R32UI);
+    gl::dispatch1D(fragments.count, 64);
+    glMemoryBarrier(barrier);
+
+    const GLsizeiptr bytes = GLsizeiptr(std::max<std::uint32_t>(cells, 1)) * 4;
+    octree.cellAlbedo = gl::createBuffer(bytes, nullptr, 0, "cell albedo");
+    octree.cellNormal = gl::createBuffer(bytes, nullptr, 0, "cell normal");
+    octree.cellArea = gl::createBuffer(bytes, nullptr, 0, "cell area");
+    octree.cellFragments = gl::createBuffer(bytes, nullptr, 0, "cell fragments");
+    if (fragments.hasEmissive) octree.cellEmissive = gl::createBuffer(bytes * 2, nullptr, 0, "cell emission");
+    else octree.cellEmissive.reset();
+    gl::Buffer status = gl::createBuffer(8, nullptr, GL_DYNAMIC_STORAGE_BIT, "leaf status");
+    const std::uint32_t zeros[2] = {0, 0};
+    glNamedBufferSubData(status.id(), 0, 8, zeros);
+
+    p = normalize_.id();
+    glUseProgram(p);
+    octree.bind(p);
+    gl::setUniform(p, "uHasEmissive", fragments.hasEmissive ? 1 : 0);
+    gl::setUniform(p, "uEmissiveScale", emissiveScale);
+    glBindImageTexture(3, accumulatorTexture.id(), 0, GL_FALSE, 0, GL_READ_ONLY, GL_R32UI);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 6, status.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 7, octree.cellAlbedo.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 8, octree.cellNormal.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 9, octree.cellArea.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 10, octree.cellFragments.id());
+    if (fragments.hasEmissive) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 11, octree.cellEmissive.id());
+    gl::dispatch1D(cells, 64);
+    glMemoryBarrier(barrier | GL_BUFFER_UPDATE_BARRIER_BIT);
+
+    std::uint32_t result[2] = {0, 0};
+    glGetNamedBufferSubData(status.id(), 0, 8, result);
+    if (result[0] > 0)
+        fail(result[0], " voxels received more than 16,843,009 fragments each (largest: ", result[1],
+             "); their 32-bit sums would overflow. Lower --voxel-levels or simplify the model");
+    gl::checkErrors("computing the octree's cell values");
+    return {result[1]};
+}
+
+}  // namespace vct

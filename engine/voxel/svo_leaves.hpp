@@ -1,0 +1,21 @@
+#pragma once
+// svo_leaves pass (DESIGN §4 pass 3): fragment values → per-cell integer sums (atomicAdd,
+// order-independent) → normalized cell values: albedo, opacity, normal, area, emission.
+#include "voxel/octree.hpp"
+
+namespace vct {
+
+struct LeafStatistics {
+    std::uint32_t maxFragmentsInCell = 0;
+};
+
+class SvoLeaves {
+public:
+    SvoLeaves();
+    LeafStatistics run(const FragmentList& fragments, GLuint fragmentNodeTexture, float maxEmission, Octree& octree);
+
+private:
+    gl::Program accumulate_, normalize_;
+};
+
+}  // namespace vct

@@ -1,0 +1,51 @@
+#version 450
+layout(local_size_x = 64) in;
+// svo_leaves, step 1: every fragment adds its values to its cell's integer accumulators
+// (DESIGN 5.2). Integer addition is associative, so the sums — and everything built from them —
+// are bit-identical whatever the order in which thousands of fragments of one cell arrive.
+//   albedo: 8-bit channels summed in 32 bits (exact up to 16.8 M fragments per cell)
+//   normal: components × 127 summed as two's-complement 32-bit integers
+//   area, emission: 64-bit fixed point (low word, then a carry into the high word)
+#include "voxel_common.glsl"
+#include "octree.glsl"
+
+layout(rgba32ui, binding = 0) uniform readonly uimageBuffer uFragments;
+layout(r32ui, binding = 1) uniform readonly uimageBuffer uFragmentNode;  // the fragment's cell node
+layout(rg32ui, binding = 2) uniform readonly uimageBuffer uFragmentEmissive;
+layout(r32ui, binding = 3) uniform uimageBuffer uAccumulators;  // ACC_FIELDS per cell
+
+uniform uint uFragmentCount;
+uniform int uHasEmissive;
+uniform float uEmissiveScale;  // fixed-point units per unit of radiance
+
+const int ACC_FIELDS = 16;
+const float AREA_SCALE = 16777216.0;  // 2^24 units per voxel face
+
+void add64(int base, uint value) {
+    uint old = imageAtomicAdd(uAccumulators, base, value);
+    if (old + value < old) imageAtomicAdd(uAccumulators, base + 1, 1u);
+}
+
+void main() {
+    uint f = linearInvocation();
+    if (f >= uFragmentCount) return;
+    uvec4 fragment = imageLoad(uFragments, int(f));
+    uint cell = imageLoad(uFragmentNode, int(f)).x - uLevelStart[uLevels];
+    int base = int(cell) * ACC_FIELDS;
+    vec4 albedo = unpackUnorm4x8(fragment.y);
+    uvec3 albedo8 = uvec3(round(albedo.rgb * 255.0));
+    ivec3 normal = ivec3(round(unpackNormal(fragment.z) * 127.0));
+    imageAtomicAdd(uAccumulators, base + 0, 1u);
+    imageAtomicAdd(uAccumulators, base + 1, albedo8.r);
+    imageAtomicAdd(uAccumulators, base + 2, albedo8.g);
+    imageAtomicAdd(uAccumulators, base + 3, albedo8.b);
+    imageAtomicAdd(uAccumulators, base + 4, uint(normal.x));
+    imageAtomicAdd(uAccumulators, base + 5, uint(normal.y));
+    imageAtomicAdd(uAccumulators, base + 6, uint(normal.z));
+    add64(base + 7, uint(round(uintBitsToFloat(fragment.w) * AREA_SCALE)));
+    if (uHasEmissive != 0) {
+        uvec2 e = imageLoad(uFragmentEmissive, int(f)).xy;
+        vec3 emission = vec3(unpackHalf2x16(e.x), unpackHalf2x16(e.y).x);
+        for (int c = 0; c < 3; ++c) add64(base + 9 + 2 * c, uint(round(max(emission[c], 0.0) * uEmissiveScale)));
+    }
+}

@@ -1,0 +1,49 @@
+#version 450
+layout(local_size_x = 64) in;
+// svo_leaves, step 2: per cell, turn the integer sums into values: mean albedo, opacity
+// α = min(1, area in voxel-face units), mean normal, area, mean emission (brick_layout.hpp).
+#include "voxel_common.glsl"
+#include "octree.glsl"
+
+layout(r32ui, binding = 3) uniform readonly uimageBuffer uAccumulators;
+layout(std430, binding = 6) buffer Status { uint overflowCells; uint maxFragmentsInCell; };
+layout(std430, binding = 7) buffer CellAlbedo { uint cellAlbedo[]; };    // RGBA8: albedo, opacity
+layout(std430, binding = 8) buffer CellNormal { uint cellNormal[]; };    // octahedral
+layout(std430, binding = 9) buffer CellArea { float cellArea[]; };       // voxel-face units
+layout(std430, binding = 10) buffer CellFragments { uint cellFragments[]; };
+layout(std430, binding = 11) buffer CellEmissive { uvec2 cellEmissive[]; };  // half RGB
+
+uniform int uHasEmissive;
+uniform float uEmissiveScale;
+
+const int ACC_FIELDS = 16;
+const double AREA_SCALE = 16777216.0;
+const uint MAX_EXACT_FRAGMENTS = 16843009u;  // 255 · n < 2^32
+
+double load64(int base) {
+    return double(imageLoad(uAccumulators, base).x) + 4294967296.0lf * double(imageLoad(uAccumulators, base + 1).x);
+}
+
+void main() {
+    uint cell = linearInvocation();
+    if (cell >= uLevelCount[uLevels]) return;
+    int base = int(cell) * ACC_FIELDS;
+    uint count = imageLoad(uAccumulators, base).x;
+    if (count > MAX_EXACT_FRAGMENTS) atomicAdd(overflowCells, 1u);
+    atomicMax(maxFragmentsInCell, count);
+    float n = float(max(count, 1u));
+    vec3 albedo = vec3(imageLoad(uAccumulators, base + 1).x, imageLoad(uAccumulators, base + 2).x,
+                       imageLoad(uAccumulators, base + 3).x) / (255.0 * n);
+    vec3 normal = vec3(int(imageLoad(uAccumulators, base + 4).x), int(imageLoad(uAccumulators, base + 5).x),
+                       int(imageLoad(uAccumulators, base + 6).x));
+    float area = float(load64(base + 7) / AREA_SCALE);
+    cellAlbedo[cell] = packUnorm4x8(vec4(albedo, min(area, 1.0)));
+    cellNormal[cell] = packNormal(dot(normal, normal) > 0.0 ? normalize(normal) : vec3(0.0, 0.0, 1.0));
+    cellArea[cell] = area;
+    cellFragments[cell] = count;
+    if (uHasEmissive != 0) {
+        vec3 emission = vec3(float(load64(base + 9)), float(load64(base + 11)), float(load64(base + 13))) /
+                        (uEmissiveScale * n);
+        cellEmissive[cell] = uvec2(packHalf2x16(emission.rg), packHalf2x16(vec2(emission.b, 0.0)));
+    }
+}
