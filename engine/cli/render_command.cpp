@@ -32,6 +32,7 @@ struct RenderOptions {
     int voxelLevels = 8;
     int voxelViewLevel = 0;
     bool noBricks = false;
+    bool rebuildOctree = false;
 };
 
 void run(const RenderOptions& o) {
@@ -52,6 +53,7 @@ void run(const RenderOptions& o) {
     settings.voxelLevels = o.voxelLevels;
     settings.voxelViewLevel = o.voxelViewLevel;
     settings.bricks = !o.noBricks;
+    settings.rebuildOctreeEveryFrame = o.rebuildOctree;
     if (o.width < 1 || o.height < 1 || o.width > 16384 || o.height > 16384)
         fail("image size ", o.width, "x", o.height, " is out of range; --width and --height must be within 1..16384");
 
@@ -112,6 +114,8 @@ Run addRenderCommand(CLI::App& app) {
     command->add_option("--voxel-level", o.voxelViewLevel,
                         "octree level shown by --view voxels (1..L; default L, the voxels themselves)");
     command->add_flag("--no-bricks", o.noBricks, "voxel view: raw node values instead of filtered bricks");
+    command->add_flag("--rebuild-octree", o.rebuildOctree,
+                      "build the octree again every frame (benchmarks: with --frames 2, a warm build is timed)");
     return [options] { run(*options); };
 }
 

@@ -51,7 +51,7 @@ void Renderer::renderFrame(const Camera& camera) {
     timer_.beginFrame();
     if (settings_.view == ViewMode::Voxels) {
         // Only the octree and the march: no lighting work for a view that shows none.
-        if (!svo_) buildOctree();
+        if (!svo_ || settings_.rebuildOctreeEveryFrame) buildOctree();
         if (!voxelView_) voxelView_ = std::make_unique<VoxelView>(settings_.width, settings_.height);
         {
             gl::GpuTimer::Scope pass(timer_, "voxel_view");

@@ -36,6 +36,7 @@ struct RenderSettings {
     int voxelLevels = 8;     // octree resolution 2^voxelLevels
     int voxelViewLevel = 0;  // level shown by the voxel view; 0 = voxelLevels (the voxels)
     bool bricks = true;      // voxel view samples filtered bricks (else raw node values)
+    bool rebuildOctreeEveryFrame = false;  // for benchmarks: time a warm octree build
 };
 
 // Throws a clear error when the settings cannot work on this context (size 0, beyond GL limits).
