@@ -7,6 +7,8 @@
 #include "core/error.hpp"
 #include "gl/context.hpp"
 #include "gl/gl.hpp"
+#include "render/gpu_scene.hpp"
+#include "voxel/svo_builder.hpp"
 
 namespace vct::cli {
 namespace {
@@ -15,6 +17,7 @@ struct InfoOptions {
     SceneOptions scene;
     bool gl = false;
     std::string backend = "osmesa";
+    int voxelLevels = 0;
 };
 
 void printVec(const char* label, const glm::dvec3& v) { std::printf("%s(%.6g, %.6g, %.6g)", label, v.x, v.y, v.z); }
@@ -47,6 +50,19 @@ void run(const InfoOptions& o) {
                 r.sourceTriangles, r.degenerateTriangles, r.droppedTriangles, r.repairedNormals, r.repairedUvs,
                 r.missingTextures.size());
     for (const auto& t : r.missingTextures) std::printf("  missing texture: %s\n", t.c_str());
+    if (o.voxelLevels) {
+        // The octree's real size: build it (on the GPU) and measure.
+        auto context = gl::createContext(gl::parseBackend(o.backend));
+        GpuScene gpuScene(scene);
+        SvoBuilder builder;
+        gl::GpuTimer timer;
+        timer.beginFrame();
+        builder.build(gpuScene, scene, o.voxelLevels, timer);
+        timer.endFrame();
+        const VoxelGrid& grid = builder.octree().grid;
+        std::printf("voxel grid        %d³, voxel size %.6g (scene units)\n", grid.resolution(), grid.voxelSize);
+        std::printf("%s", formatVoxelMemory(builder.memory()).c_str());
+    }
     if (o.gl) {
         auto context = gl::createContext(gl::parseBackend(o.backend));
         const auto& info = context->info();
@@ -71,7 +87,9 @@ Run addInfoCommand(CLI::App& app) {
     CLI::App* command = app.add_subcommand("info", "print what a scene contains (and, with --gl, the GL limits)");
     addSceneOptions(*command, options->scene, false);
     command->add_flag("--gl", options->gl, "also create a context and print renderer and limits");
-    command->add_option("--backend", options->backend, "backend for --gl")->capture_default_str();
+    command->add_option("--backend", options->backend, "backend for --gl and --voxel-levels")->capture_default_str();
+    command->add_option("--voxel-levels", options->voxelLevels,
+                        "build the octree at 2^L voxels per axis and report its nodes per level and memory");
     return [options] { run(*options); };
 }
 
