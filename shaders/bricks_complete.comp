@@ -4,19 +4,24 @@ layout(local_size_x = 64) in;
 // node of the level whose closed cube contains q, written into the 3D brick pool. The nodes are
 // visited in a canonical order (offset −1 before 0 before +1, z then y then x), so every node that
 // shares q sums the same numbers in the same order and stores the bit-identical value.
+// Variant WORK_LIST_BORDER: only the nodes next to touched ones (radiance); the rest of the
+// pool was cleared and stays zero.
 #include "voxel_common.glsl"
 #include "octree.glsl"
 #include "bricks_common.glsl"
+#ifdef WORK_LIST_BORDER
+#include "radiance_common.glsl"
+#endif
+#include "work_list.glsl"
 
 layout(rgba32f, binding = 0) uniform readonly imageBuffer uPartial;
 layout(rgba16f, binding = 1) uniform writeonly image3D uBrickPool;
 
-uniform int uLevel;
 
 void main() {
-    uint i = linearInvocation();
-    if (i >= uLevelCount[uLevel]) return;
-    uint node = uLevelStart[uLevel] + i;
+    bool valid;
+    uint node = workNode(valid);
+    if (!valid) return;
     ivec3 coord = ivec3(unpackCell(nodeCoord[node]));
     int size = 1 << uLevel;
     // The 3×3×3 block of same-level nodes around this one (index (o + 1) · (1, 3, 9)).

@@ -3,28 +3,38 @@ layout(local_size_x = 64) in;
 // bricks, step 1: partial bricks of the leaf nodes from their cells (brick_layout.hpp):
 // P(q) = 1/8 · Σ V(c) over the node's cells c whose closed cube contains q, V = (ρ·α, α).
 // Also the node's raw value: the mean of V over its 8 cells.
+// Variants: RADIANCE reads the voxels' premultiplied radiance instead of albedo (and with
+// WORK_LIST_TOUCHED runs only over the touched leaves).
 #include "voxel_common.glsl"
 #include "octree.glsl"
 #include "bricks_common.glsl"
+#ifdef RADIANCE
+#include "radiance_common.glsl"
+#endif
+#include "work_list.glsl"
 
 layout(std430, binding = 7) buffer CellAlbedo { uint cellAlbedo[]; };
 layout(rgba32f, binding = 0) uniform writeonly imageBuffer uPartial;  // 27 per node of this level
 layout(std430, binding = 12) buffer RawValue { vec4 rawValue[]; };
 
-uniform int uLevel;  // uLevels − 1
 
 void main() {
-    uint i = linearInvocation();
-    if (i >= uLevelCount[uLevel]) return;
-    uint node = uLevelStart[uLevel] + i;
+    bool valid;
+    uint node = workNode(valid);
+    if (!valid) return;
+    uint i = node - uLevelStart[uLevel];
     vec4 cells[8];
     vec4 raw = vec4(0.0);
     for (uint slot = 0u; slot < 8u; ++slot) {
         uint cell = childOf(node, slot);
         vec4 v = vec4(0.0);
         if (cell != NONE) {
+#ifdef RADIANCE
+            v = cellRadiance[cell - uLevelStart[uLevels]];
+#else
             vec4 albedo = unpackUnorm4x8(cellAlbedo[cell - uLevelStart[uLevels]]);
             v = vec4(albedo.rgb * albedo.a, albedo.a);
+#endif
         }
         cells[slot] = v;
         raw += v;

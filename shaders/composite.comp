@@ -12,6 +12,7 @@ layout(binding = 2) uniform sampler2D uPosition;
 layout(binding = 3) uniform sampler2D uEmissive;
 layout(binding = 4) uniform sampler2D uDirect;
 layout(binding = 5) uniform sampler2D uDebugImage;  // a debug view's linear colour, shown as it is
+layout(binding = 6) uniform sampler2D uIndirect;    // indirect irradiance (rgb), visibility (a)
 layout(rgba32f, binding = 0) uniform writeonly image2D uHdr;
 layout(rgba8, binding = 1) uniform writeonly image2D uLdr;
 
@@ -20,6 +21,8 @@ const int AOV_DIRECT = 1;
 const int AOV_ALBEDO = 2;
 const int AOV_NORMAL = 3;
 const int AOV_DEPTH = 4;
+const int AOV_INDIRECT = 5;
+const int AOV_AO = 6;
 
 uniform int uAov;
 uniform float uExposure;     // 2^EV
@@ -27,7 +30,9 @@ uniform int uToneCurve;
 uniform vec3 uEye;
 uniform vec3 uForward;
 uniform float uDepthScale;   // depth shown as white in the 8-bit depth view
-uniform int uShowDebugImage;
+uniform int uShowDebugImage;  // 0: no, 1: as it is (albedo), 2: tone-mapped (radiance)
+uniform int uHasIndirect;
+uniform float uGiScale;  // 1 in every accuracy measurement (DESIGN 5.3)
 
 void main() {
     ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
@@ -38,7 +43,7 @@ void main() {
     vec3 ldr;
     if (uShowDebugImage != 0) {
         hdr = texelFetch(uDebugImage, pixel, 0).rgb;
-        ldr = linearToSrgb(hdr);
+        ldr = linearToSrgb(uShowDebugImage == 2 ? toneCurve(hdr * uExposure, uToneCurve) : hdr);
         sky = false;
     } else if (uAov == AOV_ALBEDO) {
         hdr = sky ? vec3(0.0) : texelFetch(uAlbedo, pixel, 0).rgb;
@@ -50,9 +55,20 @@ void main() {
         float depth = sky ? 0.0 : dot(position.xyz - uEye, uForward);
         hdr = vec3(depth);
         ldr = vec3(sky ? 0.0 : 1.0 - clamp(depth / uDepthScale, 0.0, 1.0));
+    } else if (uAov == AOV_INDIRECT) {
+        hdr = (sky || uHasIndirect == 0) ? vec3(0.0) : texelFetch(uIndirect, pixel, 0).rgb;  // irradiance, W/m²
+        ldr = linearToSrgb(toneCurve(hdr / 3.14159265 * uExposure, uToneCurve));
+    } else if (uAov == AOV_AO) {
+        hdr = vec3(sky || uHasIndirect == 0 ? 1.0 : texelFetch(uIndirect, pixel, 0).a);
+        ldr = hdr;
     } else {
         hdr = texelFetch(uDirect, pixel, 0).rgb;
-        if (uAov == AOV_FINAL && !sky) hdr += texelFetch(uEmissive, pixel, 0).rgb;
+        if (uAov == AOV_FINAL && !sky) {
+            hdr += texelFetch(uEmissive, pixel, 0).rgb;
+            // Lambertian: outgoing radiance = ρ/π × irradiance, added with weight exactly uGiScale.
+            if (uHasIndirect != 0)
+                hdr += uGiScale * texelFetch(uAlbedo, pixel, 0).rgb / 3.14159265358979 * texelFetch(uIndirect, pixel, 0).rgb;
+        }
         ldr = linearToSrgb(toneCurve(hdr * uExposure, uToneCurve));
     }
     imageStore(uHdr, pixel, vec4(hdr, sky ? 0.0 : 1.0));

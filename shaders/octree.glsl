@@ -16,6 +16,7 @@ layout(std430, binding = 4) buffer NodeParent { uint nodeParent[]; };
 layout(std430, binding = 5) buffer NodeNeighbour { uint nodeNeighbour[]; };  // 6 per node: −x +x −y +y −z +z
 
 uniform int uLevels;                    // L: cells are level L, leaves level L − 1
+uniform int uLevel;                     // the level a per-level pass works on
 uniform uint uLevelStart[MAX_LEVELS + 1];
 uniform uint uLevelCount[MAX_LEVELS + 1];
 

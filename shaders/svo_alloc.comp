@@ -6,7 +6,6 @@ layout(local_size_x = 64) in;
 #include "octree.glsl"
 
 layout(std430, binding = 6) buffer Counts { uint counts[]; };
-uniform int uLevel;
 uniform int uPhase;
 
 void main() {

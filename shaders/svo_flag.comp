@@ -9,7 +9,6 @@ layout(rgba32ui, binding = 0) uniform readonly uimageBuffer uFragments;
 layout(r32ui, binding = 1) uniform uimageBuffer uFragmentNode;  // node of each fragment at this level
 
 uniform uint uFragmentCount;
-uniform int uLevel;
 
 void main() {
     uint f = linearInvocation();

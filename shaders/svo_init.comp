@@ -5,7 +5,6 @@ layout(local_size_x = 64) in;
 #include "voxel_common.glsl"
 #include "octree.glsl"
 
-uniform int uLevel;
 
 void main() {
     uint i = linearInvocation();

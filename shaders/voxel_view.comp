@@ -14,6 +14,7 @@ layout(local_size_x = 8, local_size_y = 8) in;
 layout(rgba32f, binding = 0) uniform writeonly image2D uOutput;
 layout(binding = 0) uniform sampler3D uBrickAlbedo;
 layout(std430, binding = 7) buffer CellAlbedo { uint cellAlbedo[]; };
+layout(std430, binding = 18) buffer CellRadiance { vec4 cellRadiance[]; };
 layout(std430, binding = 12) buffer RawValue { vec4 rawValue[]; };
 
 uniform vec3 uEyeVoxel;      // camera position in voxel space
@@ -21,9 +22,11 @@ uniform vec3 uForward, uRight, uUp;  // camera basis (voxel space = scaled scene
 uniform vec2 uTanHalfFov;    // tan(fovX/2), tan(fovY/2)
 uniform int uViewLevel;      // 1..uLevels
 uniform int uUseBricks;
+uniform int uShowRadiance;   // radiance pool instead of albedo: no face shading
 
 vec4 nodeValue(uint node, int level, vec3 p) {
     if (level == uLevels) {
+        if (uShowRadiance != 0) return cellRadiance[node - uLevelStart[uLevels]];
         vec4 a = unpackUnorm4x8(cellAlbedo[node - uLevelStart[uLevels]]);
         return vec4(a.rgb * a.a, a.a);
     }
@@ -56,7 +59,7 @@ void main() {
             // Opacity is defined per node width; correct it for the length actually crossed.
             float alpha = 1.0 - pow(1.0 - clamp(v.a, 0.0, 0.999), (tExit - t) / nodeSize);
             const float faceShade[3] = float[3](0.8, 1.0, 0.6);
-            vec3 albedo = (v.a > 0.0 ? v.rgb / v.a : vec3(0.0)) * faceShade[hit.entryAxis];
+            vec3 albedo = (v.a > 0.0 ? v.rgb / v.a : vec3(0.0)) * (uShowRadiance != 0 ? 1.0 : faceShade[hit.entryAxis]);
             color.rgb += (1.0 - color.a) * alpha * albedo;
             color.a += (1.0 - color.a) * alpha;
         }

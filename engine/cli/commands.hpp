@@ -11,5 +11,7 @@ using Run = std::function<void()>;
 
 Run addRenderCommand(CLI::App& app);
 Run addInfoCommand(CLI::App& app);
+Run addReferenceCommand(CLI::App&);
+Run addCompareCommand(CLI::App&);
 
 }  // namespace vct::cli

@@ -21,6 +21,8 @@ int main(int argc, char** argv) {
     app.add_flag("-q,--quiet", quiet, "only warnings and errors on stderr, no timing table");
     cli::Run render = cli::addRenderCommand(app);
     cli::Run info = cli::addInfoCommand(app);
+    cli::Run reference = cli::addReferenceCommand(app);
+    cli::Run compare = cli::addCompareCommand(app);
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {
@@ -31,6 +33,8 @@ int main(int argc, char** argv) {
     try {
         if (app.got_subcommand("render")) render();
         if (app.got_subcommand("info")) info();
+        if (app.got_subcommand("reference")) reference();
+        if (app.got_subcommand("compare")) compare();
     } catch (const Error& e) {
         std::fprintf(stderr, "vct: error: %s\n", e.what());
         return 1;

@@ -33,6 +33,10 @@ struct RenderOptions {
     int voxelViewLevel = 0;
     bool noBricks = false;
     bool rebuildOctree = false;
+    std::string gi = "on";
+    bool noPhotons = false;
+    ConeSettings cones;
+    float giScale = 1.0f;
 };
 
 void run(const RenderOptions& o) {
@@ -54,6 +58,11 @@ void run(const RenderOptions& o) {
     settings.voxelViewLevel = o.voxelViewLevel;
     settings.bricks = !o.noBricks;
     settings.rebuildOctreeEveryFrame = o.rebuildOctree;
+    if (o.gi != "on" && o.gi != "off") fail("--gi must be on or off, not '", o.gi, "'");
+    settings.gi = o.gi == "on";
+    settings.photons = !o.noPhotons;
+    settings.cones = o.cones;
+    settings.display.giScale = o.giScale;
     if (o.width < 1 || o.height < 1 || o.width > 16384 || o.height > 16384)
         fail("image size ", o.width, "x", o.height, " is out of range; --width and --height must be within 1..16384");
 
@@ -107,13 +116,28 @@ Run addRenderCommand(CLI::App& app) {
         ->capture_default_str();
     command->add_option("--frames", o.frames, "render this many frames; timings are the last frame's")
         ->capture_default_str();
-    command->add_option("--view", o.view, "lit (the lit image) or voxels (the octree, unlit albedo)")
+    command->add_option("--view", o.view,
+                        "lit (the lit image), voxels (the octree's albedo) or radiance (the octree's radiance)")
+        ->capture_default_str();
+    command->add_option("--gi", o.gi, "indirect light by cone tracing: on or off")->capture_default_str();
+    command->add_flag("--no-photons", o.noPhotons, "inject no light (cones then see only emission; AO stays)");
+    command->add_option("--cones", o.cones.cones, "diffuse cone set: 1, 5, 6, 9 or 16 cones")->capture_default_str();
+    command->add_option("--cone-aperture", o.cones.apertureScale, "factor on the derived cone apertures (tan)")
+        ->capture_default_str();
+    command->add_option("--cone-step", o.cones.step, "cone step length as a fraction of its diameter")
+        ->capture_default_str();
+    command->add_option("--cone-offset", o.cones.offset, "cone start offset along the normal, in voxels")
+        ->capture_default_str();
+    command->add_option("--cone-lift", o.cones.lift,
+                        "extra offset along the normal per unit of cone diameter (against self-illumination)")
+        ->capture_default_str();
+    command->add_option("--gi-scale", o.giScale, "artistic factor on indirect light (1 = physically consistent)")
         ->capture_default_str();
     command->add_option("--voxel-levels", o.voxelLevels, "octree resolution 2^L voxels per axis, L in 5..10")
         ->capture_default_str();
     command->add_option("--voxel-level", o.voxelViewLevel,
                         "octree level shown by --view voxels (1..L; default L, the voxels themselves)");
-    command->add_flag("--no-bricks", o.noBricks, "voxel view: raw node values instead of filtered bricks");
+    command->add_flag("--no-bricks", o.noBricks, "raw node values instead of filtered bricks (cones and voxel views)");
     command->add_flag("--rebuild-octree", o.rebuildOctree,
                       "build the octree again every frame (benchmarks: with --frames 2, a warm build is timed)");
     return [options] { run(*options); };

@@ -2,9 +2,9 @@
 // One frame of vct, pass by pass, each bracketed by the GPU timer. The command line (`vct
 // render`), the viewer and the tests all render through this class, so they share one pipeline.
 //
-// Passes today (DESIGN §4): the octree passes (voxelize … bricks_mip, once per scene, only when
-// a view needs the octree), light_view (per light), gbuffer, direct_lighting, voxel_view (debug),
-// composite.
+// Passes (DESIGN §4): the octree passes voxelize … bricks_mip (once per scene, only when GI or a
+// voxel view needs the octree), light_view (per light), inject, radiance_mip, radiance_border
+// (GI only), gbuffer, direct_lighting, cone_trace (GI only) or voxel_view (debug), composite.
 #include <memory>
 #include <string>
 #include <utility>
@@ -12,18 +12,21 @@
 
 #include "core/image.hpp"
 #include "gl/gpu_timer.hpp"
+#include "lighting/inject.hpp"
+#include "lighting/radiance_filter.hpp"
 #include "render/composite.hpp"
+#include "render/cone_trace.hpp"
 #include "render/direct_lighting.hpp"
 #include "render/gbuffer.hpp"
 #include "render/gpu_scene.hpp"
 #include "render/light_view.hpp"
 #include "render/voxel_view.hpp"
-#include "voxel/svo_builder.hpp"
 #include "scene/scene.hpp"
+#include "voxel/svo_builder.hpp"
 
 namespace vct {
 
-enum class ViewMode { Lit, Voxels };
+enum class ViewMode { Lit, Voxels, Radiance };
 ViewMode parseViewMode(const std::string& name);
 
 struct RenderSettings {
@@ -33,9 +36,12 @@ struct RenderSettings {
     int pcfRadius = 1;               // shadow filter: (2r+1)² hardware-bilinear taps
     DisplaySettings display;
     ViewMode view = ViewMode::Lit;
+    bool gi = true;          // indirect light by cone tracing
+    bool photons = true;     // inject light (false: only emission and ambient occlusion)
+    ConeSettings cones;
     int voxelLevels = 8;     // octree resolution 2^voxelLevels
-    int voxelViewLevel = 0;  // level shown by the voxel view; 0 = voxelLevels (the voxels)
-    bool bricks = true;      // voxel view samples filtered bricks (else raw node values)
+    int voxelViewLevel = 0;  // level shown by the voxel views; 0 = voxelLevels (the voxels)
+    bool bricks = true;      // filtered bricks (else raw node values) in cone tracing and voxel views
     bool rebuildOctreeEveryFrame = false;  // for benchmarks: time a warm octree build
 };
 
@@ -57,14 +63,19 @@ public:
     GLuint outputTexture() const { return composite_.ldr(); }
 
     gl::GpuTimer& timer() { return timer_; }
-    // The octree, built on first use (nullptr until a view needed it).
+    // The octree, built on first use (nullptr until something needed it).
     const SvoBuilder* octree() const { return svo_.get(); }
-    void buildOctree();
+    const RadianceVolume* radiance() const { return radiance_.get(); }
     std::vector<MemoryPool> memory() const;
     const RenderSettings& settings() const { return settings_; }
     void setDisplay(const DisplaySettings& display) { settings_.display = display; }
 
 private:
+    bool needsOctree() const { return settings_.view != ViewMode::Lit || settings_.gi; }
+    bool needsRadiance() const { return settings_.view == ViewMode::Radiance || (settings_.view == ViewMode::Lit && settings_.gi); }
+    void buildOctree();
+    void updateRadiance();
+
     const Scene& scene_;
     RenderSettings settings_;
     GpuScene gpuScene_;
@@ -74,6 +85,10 @@ private:
     Composite composite_;
     gl::GpuTimer timer_;
     std::unique_ptr<SvoBuilder> svo_;
+    std::unique_ptr<RadianceVolume> radiance_;
+    std::unique_ptr<PhotonInjection> injection_;
+    std::unique_ptr<RadianceFilter> radianceFilter_;
+    std::unique_ptr<ConeTrace> coneTrace_;
     std::unique_ptr<VoxelView> voxelView_;
 };
 

@@ -14,7 +14,9 @@ Aov parseAov(const std::string& name) {
     if (name == "albedo") return Aov::Albedo;
     if (name == "normal") return Aov::Normal;
     if (name == "depth") return Aov::Depth;
-    fail("unknown --aov '", name, "'; use final, direct, albedo, normal or depth");
+    if (name == "indirect") return Aov::Indirect;
+    if (name == "ao") return Aov::Ao;
+    fail("unknown --aov '", name, "'; use final, direct, indirect, ao, albedo, normal or depth");
 }
 
 const char* aovName(Aov aov) {
@@ -24,6 +26,8 @@ const char* aovName(Aov aov) {
         case Aov::Albedo: return "albedo";
         case Aov::Normal: return "normal";
         case Aov::Depth: return "depth";
+        case Aov::Indirect: return "indirect";
+        case Aov::Ao: return "ao";
     }
     return "?";
 }
@@ -42,8 +46,8 @@ Composite::Composite(int width, int height)
       ldr_(gl::createTexture2D(GL_RGBA8, width, height, 1, "composite ldr")),
       program_(gl::buildProgram({{GL_COMPUTE_SHADER, "composite.comp"}})) {}
 
-void Composite::render(const GBuffer& gbuffer, GLuint directRadiance, const ViewTransform& camera, float depthScale,
-                       const DisplaySettings& display, GLuint debugImage) {
+void Composite::render(const GBuffer& gbuffer, GLuint directRadiance, GLuint indirect, const ViewTransform& camera,
+                       float depthScale, const DisplaySettings& display, GLuint debugImage, bool toneMapDebugImage) {
     const GLuint p = program_.id();
     glUseProgram(p);
     glBindTextureUnit(0, gbuffer.albedo());
@@ -52,7 +56,10 @@ void Composite::render(const GBuffer& gbuffer, GLuint directRadiance, const View
     glBindTextureUnit(3, gbuffer.emissive());
     glBindTextureUnit(4, directRadiance);
     glBindTextureUnit(5, debugImage);
-    gl::setUniform(p, "uShowDebugImage", debugImage != 0 ? 1 : 0);
+    glBindTextureUnit(6, indirect);
+    gl::setUniform(p, "uHasIndirect", indirect != 0 ? 1 : 0);
+    gl::setUniform(p, "uGiScale", display.giScale);
+    gl::setUniform(p, "uShowDebugImage", debugImage == 0 ? 0 : (toneMapDebugImage ? 2 : 1));
     glBindImageTexture(0, hdr_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
     glBindImageTexture(1, ldr_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA8);
     gl::setUniform(p, "uAov", int(display.aov));

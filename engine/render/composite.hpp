@@ -9,7 +9,7 @@
 
 namespace vct {
 
-enum class Aov { Final, Direct, Albedo, Normal, Depth };
+enum class Aov { Final, Direct, Albedo, Normal, Depth, Indirect, Ao };
 enum class ToneCurve { Aces, Reinhard, Clamp };
 
 Aov parseAov(const std::string& name);            // throws listing the valid names
@@ -18,6 +18,7 @@ const char* aovName(Aov aov);
 
 struct DisplaySettings {
     Aov aov = Aov::Final;
+    float giScale = 1.0f;  // artistic only; 1 in every accuracy measurement
     ToneCurve toneCurve = ToneCurve::Aces;
     double exposureEV = 0.0;
 };
@@ -25,9 +26,10 @@ struct DisplaySettings {
 class Composite {
 public:
     Composite(int width, int height);
+    // `indirect` (0 = GI off): irradiance and visibility from cone tracing.
     // `debugImage` (0 = none): a debug view's colour, shown instead of the lit image.
-    void render(const GBuffer& gbuffer, GLuint directRadiance, const ViewTransform& camera, float depthScale,
-                const DisplaySettings& display, GLuint debugImage = 0);
+    void render(const GBuffer& gbuffer, GLuint directRadiance, GLuint indirect, const ViewTransform& camera,
+                float depthScale, const DisplaySettings& display, GLuint debugImage = 0, bool toneMapDebugImage = false);
 
     ImageF readHdr() const;  // rows top to bottom
     Image8 readLdr() const;

@@ -14,7 +14,8 @@ VoxelView::VoxelView(int width, int height)
       image_(gl::createTexture2D(GL_RGBA32F, width, height, 1, "voxel view")),
       program_(gl::buildProgram({{GL_COMPUTE_SHADER, "voxel_view.comp"}})) {}
 
-void VoxelView::render(const Octree& octree, const Camera& camera, const Scene& scene, int level, bool useBricks) {
+void VoxelView::render(const Octree& octree, const Source& source, const Camera& camera, const Scene& scene, int level,
+                       bool useBricks) {
     if (level < 1 || level > octree.levels)
         fail("--voxel-level ", level, " is out of range; this octree has levels 1..", octree.levels,
              " (", octree.levels, " = the voxels themselves)");
@@ -38,9 +39,10 @@ void VoxelView::render(const Octree& octree, const Camera& camera, const Scene& 
     gl::setUniform(p, "uTanHalfFov", glm::vec2(tanX, tanY));
     gl::setUniform(p, "uViewLevel", level);
     gl::setUniform(p, "uUseBricks", useBricks ? 1 : 0);
-    glBindTextureUnit(0, octree.brickAlbedo.id());
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 7, octree.cellAlbedo.id());
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 12, octree.rawValue.id());
+    gl::setUniform(p, "uShowRadiance", source.radiance ? 1 : 0);
+    glBindTextureUnit(0, source.bricks);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, source.radiance ? 18 : 7, source.cells);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 12, source.raw);
     glBindImageTexture(0, image_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
     glDispatchCompute(GLuint((width_ + 7) / 8), GLuint((height_ + 7) / 8), 1);
     glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);

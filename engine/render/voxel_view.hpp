@@ -9,8 +9,20 @@ namespace vct {
 
 class VoxelView {
 public:
+    // What the view shows: a brick pool with its per-voxel and per-node raw values.
+    struct Source {
+        GLuint bricks;       // 3D brick pool, premultiplied (value·α, α)
+        GLuint cells;        // per voxel: RGBA8 albedo+opacity, or vec4 premultiplied radiance
+        GLuint raw;          // vec4 per node
+        bool radiance;       // radiance (no face shading, tone-mapped) or albedo
+    };
+    static Source albedo(const Octree& octree) {
+        return {octree.brickAlbedo.id(), octree.cellAlbedo.id(), octree.rawValue.id(), false};
+    }
+
     VoxelView(int width, int height);
-    void render(const Octree& octree, const Camera& camera, const Scene& scene, int level, bool useBricks);
+    void render(const Octree& octree, const Source& source, const Camera& camera, const Scene& scene, int level,
+                bool useBricks);
     GLuint image() const { return image_.id(); }
     std::size_t bytes() const { return std::size_t(width_) * height_ * 16; }
 

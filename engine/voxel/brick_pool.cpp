@@ -49,16 +49,21 @@ void setBrickPoolUniforms(GLuint program, const Octree& octree) {
     gl::setUniform(program, "uBrickPoolBricks", octree.brickPoolBricks);
 }
 
-BrickCompletion::BrickCompletion() : program_(gl::buildProgram({{GL_COMPUTE_SHADER, "bricks_complete.comp"}})) {}
+BrickCompletion::BrickCompletion(const std::vector<std::string>& defines)
+    : program_(gl::buildProgram({{GL_COMPUTE_SHADER, "bricks_complete.comp"}}, defines)) {}
 
-void BrickCompletion::run(const Octree& octree, const PartialBricks& partial) {
+void BrickCompletion::prepare(const Octree& octree, const PartialBricks& partial, GLuint pool) {
     const GLuint p = program_.id();
     glUseProgram(p);
     octree.bind(p);
     setBrickPoolUniforms(p, octree);
     gl::setUniform(p, "uLevel", partial.level);
     glBindImageTexture(0, partial.texture.id(), 0, GL_FALSE, 0, GL_READ_ONLY, GL_RGBA32F);
-    glBindImageTexture(1, octree.brickAlbedo.id(), 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_RGBA16F);
+    glBindImageTexture(1, pool, 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_RGBA16F);
+}
+
+void BrickCompletion::run(const Octree& octree, const PartialBricks& partial, GLuint pool) {
+    prepare(octree, partial, pool);
     gl::dispatch1D(octree.levelCount[partial.level], 64);
     glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
 }

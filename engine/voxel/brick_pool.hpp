@@ -19,8 +19,13 @@ void allocateBrickPool(Octree& octree);
 
 class BrickCompletion {
 public:
-    BrickCompletion();
-    void run(const Octree& octree, const PartialBricks& partial);
+    // `defines` select a variant of bricks_complete.comp (e.g. "WORK_LIST_BORDER 1").
+    explicit BrickCompletion(const std::vector<std::string>& defines = {});
+    // Completes every node of the partial's level into `pool`.
+    void run(const Octree& octree, const PartialBricks& partial, GLuint pool);
+    GLuint program() const { return program_.id(); }
+    // Binds everything but the dispatch, for callers that dispatch over a list themselves.
+    void prepare(const Octree& octree, const PartialBricks& partial, GLuint pool);
 
 private:
     gl::Program program_;

@@ -21,7 +21,7 @@ PartialBricks Bricks::run(Octree& octree) {
     glBindImageTexture(0, partial.texture.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
     gl::dispatch1D(octree.levelCount[leafLevel], 64);
     glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);
-    completion_.run(octree, partial);
+    completion_.run(octree, partial, octree.brickAlbedo.id());
     gl::checkErrors("filling the leaf bricks");
     return partial;
 }

@@ -21,7 +21,7 @@ void BricksMip::run(const Octree& octree, PartialBricks childPartial) {
         glBindImageTexture(1, childPartial.texture.id(), 0, GL_FALSE, 0, GL_READ_ONLY, GL_RGBA32F);
         gl::dispatch1D(octree.levelCount[level], 64);
         glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);
-        completion_.run(octree, partial);
+        completion_.run(octree, partial, octree.brickAlbedo.id());
         childPartial = std::move(partial);
     }
     gl::checkErrors("filtering bricks up the octree");

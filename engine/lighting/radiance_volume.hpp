@@ -1,0 +1,48 @@
+#pragma once
+// Outgoing radiance stored in the octree (DESIGN 5.3): per voxel the area-average outgoing
+// radiance of the surface inside it, premultiplied by opacity, then filtered into a radiance
+// brick pool with exactly the brick definitions of the albedo pool (brick_layout.hpp).
+// Rebuilt when lights change, only through the nodes that received light ("touched").
+#include <vector>
+
+#include "gl/objects.hpp"
+#include "voxel/brick_pool.hpp"
+#include "voxel/octree.hpp"
+
+namespace vct {
+
+struct RadianceVolume {
+    // Per voxel (cell): 64-bit fixed-point sums of reflected flux (R, G, B: low, high words) and
+    // the resulting premultiplied radiance (L·α, α).
+    gl::Buffer accumulators;  // 6 uints per cell
+    gl::Buffer cellRadiance;  // vec4 per cell
+
+    // Touched nodes: a flag per node (all levels and the cells) and, per level, the list of the
+    // touched nodes stored at [levelStart[l], levelStart[l] + count[l]) of `touchedList`.
+    // "Border" nodes: touched nodes and every node sharing a brick sample with one (their 3³
+    // neighbourhood), whose complete samples can change.
+    gl::Buffer touchedFlag, touchedList;
+    gl::Buffer borderFlag, borderList;
+    gl::Buffer listCounts;    // uints: touched counts [0..11], border counts [12..23], photons missed [24]
+    gl::Buffer indirectArgs;  // dispatch arguments, 3 uints per slot
+
+    std::vector<PartialBricks> partial;  // per level 0..L−1
+    gl::Texture brickRadiance;           // RGBA16F, same layout as Octree::brickAlbedo
+    gl::Buffer rawRadiance;              // vec4 per node: mean over its cells
+
+    float fluxScale = 0.0f;  // fixed-point units per watt
+
+    std::size_t bytes(const Octree& octree) const;
+};
+
+// Allocates everything for `octree` (once per octree build).
+void allocateRadianceVolume(const Octree& octree, RadianceVolume& volume);
+
+// Per-level numbers read back for the timing report (touched / all nodes).
+struct RadianceStatistics {
+    std::vector<std::uint32_t> touchedPerLevel;  // levels 0..L (L = cells)
+    std::uint32_t photonsMissed = 0;
+};
+RadianceStatistics readRadianceStatistics(const Octree& octree, const RadianceVolume& volume);
+
+}  // namespace vct

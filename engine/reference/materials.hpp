@@ -1,0 +1,41 @@
+#pragma once
+// What the path tracer needs to know about a surface's material, evaluated the way the
+// rasterizer's shaders/material.glsl does it:
+//   albedo ρ = baseColor · texture.rgb   (linear; texture sampled by TextureSampler)
+//   alpha    = baseAlpha · texture.a     (Mask materials: alpha < cutoff is a hole)
+//   emission = Material::emissive        (W/(m²·sr), not textured, from both sides)
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "reference/texture_sampler.hpp"
+#include "scene/scene.hpp"
+
+namespace vct::reference {
+
+class MaterialTable {
+public:
+    explicit MaterialTable(const Scene& scene);  // keeps references: `scene` must outlive this
+
+    glm::vec3 albedo(std::uint32_t material, glm::vec2 uv) const;
+    glm::vec3 emission(std::uint32_t material) const { return materials_[material].emission; }
+    bool isMasked(std::uint32_t material) const { return materials_[material].masked; }
+    bool isEmissive(std::uint32_t material) const { return materials_[material].emissive; }
+    // True where an alpha-masked material has a hole (the ray passes through).
+    bool cutsAway(std::uint32_t material, glm::vec2 uv) const;
+
+private:
+    struct Entry {
+        glm::vec3 baseColor;
+        float baseAlpha;
+        float cutoff;
+        glm::vec3 emission;
+        int texture;  // index into samplers_, −1 = none
+        bool masked;
+        bool emissive;
+    };
+    std::vector<Entry> materials_;
+    std::vector<TextureSampler> samplers_;
+};
+
+}  // namespace vct::reference

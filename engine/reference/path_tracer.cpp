@@ -1,0 +1,48 @@
+#include "reference/path_tracer.hpp"
+
+#include <algorithm>
+
+#include "reference/sampling.hpp"
+
+namespace vct::reference {
+namespace {
+
+glm::vec3 facing(glm::vec3 n, glm::vec3 rayDirection) { return glm::dot(n, rayDirection) > 0.0f ? -n : n; }
+
+}  // namespace
+
+RadianceSample PathTracer::trace(const Ray& cameraRay, Pcg32& rng) const {
+    RadianceSample result;
+    auto hit = rays_.intersect(cameraRay.origin, cameraRay.direction);
+    if (!hit) return result;
+    result.hit = true;
+
+    glm::vec3 normal = facing(hit->shadingNormal, cameraRay.direction);
+    glm::vec3 albedo = materials_.albedo(hit->material, hit->uv);
+    result.direct = glm::dvec3(materials_.emission(hit->material));
+    if (!lights_.empty()) result.direct += lights_.reflected(rays_, *hit, normal, albedo);
+
+    glm::dvec3 throughput(1.0);
+    for (int bounce = 1; bounce <= bounces_; ++bounce) {
+        throughput *= glm::dvec3(albedo);  // f·cosθ/pdf of the cosine-sampled Lambertian BRDF
+        if (bounce > kRouletteAfterBounce) {
+            const double q = std::min(0.95, std::max({throughput.x, throughput.y, throughput.z}));
+            if (!(q > 0.0) || rng.uniform() >= q) break;
+            throughput /= q;
+        } else if (throughput == glm::dvec3(0.0)) {
+            break;
+        }
+        const float u1 = rng.uniform(), u2 = rng.uniform();
+        const glm::vec3 direction = glm::normalize(sampleCosineHemisphere(normal, u1, u2));
+        hit = rays_.intersect(hit->spawnPoint(direction), direction);
+        if (!hit) break;  // left the scene: the sky is black
+        normal = facing(hit->shadingNormal, direction);
+        albedo = materials_.albedo(hit->material, hit->uv);
+        glm::dvec3 radiance(materials_.emission(hit->material));
+        if (!lights_.empty()) radiance += lights_.reflected(rays_, *hit, normal, albedo);
+        result.indirect += throughput * radiance;
+    }
+    return result;
+}
+
+}  // namespace vct::reference

@@ -1,0 +1,57 @@
+#pragma once
+// The integrator: unidirectional path tracing of two-sided Lambertian surfaces with next-event
+// estimation for the delta lights.
+//
+// A path starts with a camera ray. At every surface it reaches it adds
+//   emission Le (of the surface the ray hit), and
+//   NEE: ρ/π · Σ_lights E·cosθ·V (one shadow ray per light).
+// Then it continues with a cosine-weighted direction (throughput ×= ρ, see sampling.hpp).
+//
+// `bounces` B counts *indirect* bounces: B = 0 is direct light only (camera hit: Le + NEE);
+// B = 1 adds light that reached the camera hit from one other surface (that surface's Le and
+// NEE), which is what the voxel cone tracing models; larger B converges to full GI.
+//
+// Emissive triangles are not light-sampled (there is no list of emitters to pick from): their
+// light arrives only when a bounce ray happens to hit them (plain BSDF sampling, no MIS). That
+// is unbiased, and noisy only for small bright emitters, which the engine's scenes do not use.
+//
+// Russian roulette starts after bounce 3 (so it never acts for B ≤ 3 and the first bounces, the
+// ones the engine is compared on, carry no roulette noise): survival probability
+// q = min(0.95, max component of the throughput), throughput /= q.
+//
+// Shading normal = interpolated vertex normal turned to face the incoming ray, as in the
+// engine's G-buffer (shaders/material.glsl facingNormal).
+#include <glm/glm.hpp>
+
+#include "reference/camera_rays.hpp"
+#include "reference/delta_lights.hpp"
+#include "reference/materials.hpp"
+#include "reference/ray_scene.hpp"
+#include "reference/rng.hpp"
+
+namespace vct::reference {
+
+// One camera sample's radiance, split as --direct-out / --indirect-out want it.
+struct RadianceSample {
+    glm::dvec3 direct{0.0};    // camera hit's emission + NEE at the camera hit
+    glm::dvec3 indirect{0.0};  // everything after the first bounce
+    bool hit = false;          // the camera ray hit geometry (false: sky, radiance 0)
+};
+
+class PathTracer {
+public:
+    PathTracer(const RayScene& rays, const MaterialTable& materials, const DeltaLights& lights, int bounces)
+        : rays_(rays), materials_(materials), lights_(lights), bounces_(bounces) {}
+
+    RadianceSample trace(const Ray& cameraRay, Pcg32& rng) const;
+
+    static constexpr int kRouletteAfterBounce = 3;
+
+private:
+    const RayScene& rays_;
+    const MaterialTable& materials_;
+    const DeltaLights& lights_;
+    int bounces_;
+};
+
+}  // namespace vct::reference

@@ -1,0 +1,57 @@
+#include "render/cone_trace.hpp"
+
+#include <cmath>
+
+#include "core/error.hpp"
+#include "gl/shader.hpp"
+#include "voxel/brick_pool.hpp"
+
+namespace vct {
+
+ConeTrace::ConeTrace(int width, int height)
+    : width_(width),
+      height_(height),
+      indirect_(gl::createTexture2D(GL_RGBA32F, width, height, 1, "indirect irradiance")),
+      program_(gl::buildProgram({{GL_COMPUTE_SHADER, "cone_trace.comp"}})) {}
+
+void ConeTrace::render(const GBuffer& gbuffer, const Octree& octree, const RadianceVolume& radiance,
+                       const ConeSettings& settings) {
+    if (!(settings.apertureScale > 0.0f) || !(settings.step > 0.0f) || !(settings.offset >= 0.0f))
+        fail("cone settings must be positive: --cone-aperture ", settings.apertureScale, ", --cone-step ",
+             settings.step, ", --cone-offset ", settings.offset);
+    const std::vector<Cone> cones = makeConeSet(settings.cones);
+    std::vector<glm::vec3> directions;
+    std::vector<float> tangents, weights;
+    for (const Cone& c : cones) {
+        directions.push_back(c.direction);
+        // Wider than ~80° a cone reaches the coarsest level within a step or two.
+        tangents.push_back(std::min(std::tan(c.halfAngle) * settings.apertureScale, 5.0f));
+        weights.push_back(c.weight);
+    }
+    const GLuint p = program_.id();
+    glUseProgram(p);
+    octree.bind(p);
+    setBrickPoolUniforms(p, octree);
+    gl::setUniform(p, "uConeCount", int(cones.size()));
+    glProgramUniform3fv(p, glGetUniformLocation(p, "uConeDirection"), GLsizei(cones.size()), &directions[0].x);
+    glProgramUniform1fv(p, glGetUniformLocation(p, "uConeTanHalfAngle"), GLsizei(cones.size()), tangents.data());
+    glProgramUniform1fv(p, glGetUniformLocation(p, "uConeWeight"), GLsizei(cones.size()), weights.data());
+    gl::setUniform(p, "uConeStep", settings.step);
+    gl::setUniform(p, "uConeOffset", settings.offset);
+    gl::setUniform(p, "uConeLift", settings.lift);
+    const float diagonal = float(octree.grid.resolution()) * 1.7320508f;
+    gl::setUniform(p, "uMaxDistance", settings.maxDistance > 0.0f ? settings.maxDistance : diagonal);
+    gl::setUniform(p, "uUseBricks", settings.bricks ? 1 : 0);
+    gl::setUniform(p, "uVoxelOrigin", glm::vec3(octree.grid.localMin));
+    gl::setUniform(p, "uVoxelScale", float(1.0 / octree.grid.voxelSize));
+    glBindTextureUnit(0, gbuffer.normal());
+    glBindTextureUnit(1, gbuffer.position());
+    glBindTextureUnit(2, radiance.brickRadiance.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 12, radiance.rawRadiance.id());
+    glBindImageTexture(0, indirect_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+    glDispatchCompute(GLuint((width_ + 7) / 8), GLuint((height_ + 7) / 8), 1);
+    glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+    gl::checkErrors("tracing cones");
+}
+
+}  // namespace vct

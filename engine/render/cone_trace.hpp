@@ -1,0 +1,34 @@
+#pragma once
+// cone_trace pass (DESIGN §4 pass 12): indirect irradiance and ambient visibility per pixel by
+// diffuse cones through the radiance bricks.
+#include "gl/objects.hpp"
+#include "lighting/radiance_volume.hpp"
+#include "render/cone_set.hpp"
+#include "render/gbuffer.hpp"
+
+namespace vct {
+
+struct ConeSettings {
+    int cones = 5;              // 1, 5, 6, 9 or 16 (cone_set.hpp)
+    float apertureScale = 1.0f; // multiplies the derived half-angles (tan), for the benchmark sweep
+    float step = 0.5f;          // step length / cone diameter
+    float offset = 1.5f;        // start offset along the normal, voxels
+    float lift = 0.5f;          // extra normal offset per unit of cone diameter (self-illumination)
+    float maxDistance = 0.0f;   // voxels; 0 = through the whole volume
+    bool bricks = true;         // false: raw node values, no interpolation (`--no-bricks`)
+};
+
+class ConeTrace {
+public:
+    ConeTrace(int width, int height);
+    void render(const GBuffer& gbuffer, const Octree& octree, const RadianceVolume& radiance, const ConeSettings& settings);
+    GLuint indirect() const { return indirect_.id(); }  // RGBA32F: irradiance, visibility
+    std::size_t bytes() const { return std::size_t(width_) * height_ * 16; }
+
+private:
+    int width_, height_;
+    gl::Texture indirect_;
+    gl::Program program_;
+};
+
+}  // namespace vct

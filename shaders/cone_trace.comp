@@ -1,0 +1,130 @@
+#version 450
+layout(local_size_x = 8, local_size_y = 8) in;
+// cone_trace (DESIGN §4 pass 12, §5.5): per pixel, diffuse cones over the hemisphere around the
+// normal march through the radiance bricks. Each cone composites premultiplied radiance front to
+// back; its result times its weight (∫cosθ dω of its region, weights sum to π) adds up to the
+// indirect irradiance E. Output: E (rgb) and ambient visibility (a: 1 = nothing in the way).
+#include "voxel_common.glsl"
+#include "octree.glsl"
+#include "bricks_common.glsl"
+#include "octree_march.glsl"
+
+layout(binding = 0) uniform sampler2D uNormal;
+layout(binding = 1) uniform sampler2D uPosition;
+layout(binding = 2) uniform sampler3D uBrickRadiance;  // premultiplied (L·α, α)
+layout(std430, binding = 12) buffer RawRadiance { vec4 rawRadiance[]; };
+layout(rgba32f, binding = 0) uniform writeonly image2D uIndirect;
+
+#define MAX_CONES 16
+uniform int uConeCount;
+uniform vec3 uConeDirection[MAX_CONES];  // tangent space, z = normal
+uniform float uConeTanHalfAngle[MAX_CONES];
+uniform float uConeWeight[MAX_CONES];
+uniform float uConeStep;     // step length as a fraction of the cone diameter
+uniform float uConeOffset;   // start offset along the normal, in voxels
+uniform float uConeLift;     // extra offset along the normal per unit of cone diameter
+uniform float uMaxDistance;  // in voxels
+uniform int uUseBricks;
+uniform vec3 uVoxelOrigin;
+uniform float uVoxelScale;
+
+// Radiance at p (voxel space) for a footprint of 2^lod voxels: trilinear inside the bricks of the
+// two nearest levels, linear between them. Returns false with tSkip set when p lies in an empty
+// node of the coarser level: the whole node can be skipped in one step.
+bool sampleRadiance(vec3 p, float lod, vec3 origin, vec3 invDirection, out vec4 value, out float tSkip) {
+    lod = clamp(lod, 0.0, float(uLevels - 1));
+    int fineLevel = uLevels - 1 - int(floor(lod));
+    int coarseLevel = max(fineLevel - 1, 0);
+    float blend = fract(lod);
+    uvec3 cell = uvec3(clamp(floor(p), vec3(0.0), vec3(float((1 << uLevels) - 1))));
+    uint node = 0u, coarseNode = fineLevel == 0 ? 0u : NONE, fineNode = NONE;
+    int level = 0;
+    for (level = 1; level <= fineLevel; ++level) {
+        uint child = childOf(node, childSlot(cell >> uint(uLevels - level)));
+        if (child == NONE) break;
+        node = child;
+        if (level == coarseLevel) coarseNode = node;
+    }
+    if (level > fineLevel) fineNode = node;
+    if (coarseNode == NONE) {  // empty at the coarse level (or above): skip that empty node
+        float size = float(1 << (uLevels - level));
+        vec3 lo = vec3(cell >> uint(uLevels - level)) * size;
+        tSkip = rayBox(origin, invDirection, lo, lo + size).y;
+        value = vec4(0.0);
+        return false;
+    }
+    vec4 samples[2] = vec4[2](vec4(0.0), vec4(0.0));
+    uint nodes[2] = uint[2](fineNode, coarseNode);
+    int levels[2] = int[2](fineLevel, coarseLevel);
+    for (int k = 0; k < 2; ++k) {
+        if (nodes[k] == NONE) continue;
+        if (uUseBricks == 0) {
+            samples[k] = rawRadiance[nodes[k]];
+            continue;
+        }
+        float size = float(1 << (uLevels - levels[k]));
+        vec3 local = clamp((p - vec3(unpackCell(nodeCoord[nodes[k]])) * size) / size, 0.0, 1.0);
+        vec3 texel = vec3(brickOrigin(nodes[k])) + 0.5 + local * 2.0;
+        samples[k] = texture(uBrickRadiance, texel / vec3(textureSize(uBrickRadiance, 0)));
+    }
+    value = fineLevel == coarseLevel ? samples[1] : mix(samples[0], samples[1], blend);
+    return true;
+}
+
+// One cone: accumulated premultiplied radiance (rgb) and opacity (a). Samples are lifted off the
+// surface along its normal by uConeLift × the cone diameter: a sample's filter footprint is about
+// one diameter wide, and without the lift wide cones near the horizon would sample the filtered
+// voxels of the very surface they start from (the surface lighting itself).
+vec4 traceCone(vec3 origin, vec3 normal, vec3 direction, float tanHalfAngle) {
+    vec3 invDirection = 1.0 / direction;
+    float n = float(1 << uLevels);
+    float tEnd = min(rayBox(origin, invDirection, vec3(0.0), vec3(n)).y, uMaxDistance);
+    vec4 accumulated = vec4(0.0);
+    float t = 1.0;
+    for (int i = 0; i < 1024 && t < tEnd && accumulated.a < 0.99; ++i) {
+        float diameter = max(2.0 * t * tanHalfAngle, 1.0);
+        vec3 p = origin + direction * t + normal * (uConeLift * diameter);  // from t, never accumulated
+        vec4 value;
+        float tSkip;
+        if (!sampleRadiance(p, log2(diameter), origin, invDirection, value, tSkip)) {
+            t = max(tSkip + 1e-3, t + 1e-3);
+            continue;
+        }
+        // The sample's opacity holds for one sample spacing (≈ the diameter); correct it for the
+        // step actually taken.
+        float alpha = 1.0 - pow(1.0 - clamp(value.a, 0.0, 0.9999), uConeStep);
+        vec3 radiance = value.a > 1e-6 ? value.rgb * (alpha / value.a) : vec3(0.0);
+        accumulated.rgb += (1.0 - accumulated.a) * radiance;
+        accumulated.a += (1.0 - accumulated.a) * alpha;
+        t += uConeStep * diameter;
+    }
+    return accumulated;
+}
+
+void main() {
+    ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
+    if (any(greaterThanEqual(pixel, imageSize(uIndirect)))) return;
+    vec4 position = texelFetch(uPosition, pixel, 0);
+    if (position.w <= 0.0) {  // sky: no GI work
+        imageStore(uIndirect, pixel, vec4(0.0, 0.0, 0.0, 1.0));
+        return;
+    }
+    vec3 normal = normalize(texelFetch(uNormal, pixel, 0).xyz);
+    // Orthonormal basis around the normal (Duff et al. 2017).
+    float s = normal.z >= 0.0 ? 1.0 : -1.0;
+    float a = -1.0 / (s + normal.z);
+    float b = normal.x * normal.y * a;
+    vec3 tangent = vec3(1.0 + s * normal.x * normal.x * a, s * b, -s * normal.x);
+    vec3 bitangent = vec3(b, s + normal.y * normal.y * a, -normal.y);
+    vec3 origin = (position.xyz - uVoxelOrigin) * uVoxelScale + normal * uConeOffset;
+    vec3 irradiance = vec3(0.0);
+    float occlusion = 0.0;
+    for (int c = 0; c < uConeCount; ++c) {
+        vec3 d = uConeDirection[c];
+        vec3 direction = normalize(d.x * tangent + d.y * bitangent + d.z * normal);
+        vec4 cone = traceCone(origin, normal, direction, uConeTanHalfAngle[c]);
+        irradiance += uConeWeight[c] * cone.rgb;
+        occlusion += uConeWeight[c] * cone.a;
+    }
+    imageStore(uIndirect, pixel, vec4(irradiance, 1.0 - occlusion / 3.14159265358979));
+}

@@ -1,0 +1,17 @@
+#version 450
+layout(local_size_x = 64) in;
+// inject, emissive part: voxels with emission are touched too, so emissive surfaces light the
+// scene through the same radiance filtering with no extra pass.
+#include "voxel_common.glsl"
+#include "octree.glsl"
+#include "radiance_common.glsl"
+
+layout(std430, binding = 11) buffer CellEmissive { uvec2 cellEmissive[]; };
+
+void main() {
+    uint cell = linearInvocation();
+    if (cell >= uLevelCount[uLevels]) return;
+    uvec2 e = cellEmissive[cell];
+    vec3 emission = vec3(unpackHalf2x16(e.x), unpackHalf2x16(e.y).x);
+    if (any(greaterThan(emission, vec3(0.0)))) touch(uLevelStart[uLevels] + cell, uLevels);
+}
