@@ -11,8 +11,13 @@ layout(local_size_x = 8, local_size_y = 8) in;
 
 layout(binding = 0) uniform sampler2D uNormal;
 layout(binding = 1) uniform sampler2D uPosition;
-layout(binding = 2) uniform sampler3D uBrickRadiance;  // premultiplied (L·α, α)
+// Radiance (premultiplied L·α, zero where no light arrived) and opacity come from two pools with
+// the same layout: unlit geometry must still block cones, so opacity is the geometry's (the
+// albedo pool's α), never the radiance pool's.
+layout(binding = 2) uniform sampler3D uBrickRadiance;
+layout(binding = 3) uniform sampler3D uBrickAlbedo;
 layout(std430, binding = 12) buffer RawRadiance { vec4 rawRadiance[]; };
+layout(std430, binding = 20) buffer RawAlbedo { vec4 rawAlbedo[]; };
 layout(rgba32f, binding = 0) uniform writeonly image2D uIndirect;
 
 #define MAX_CONES 16
@@ -59,13 +64,13 @@ bool sampleRadiance(vec3 p, float lod, vec3 origin, vec3 invDirection, out vec4 
     for (int k = 0; k < 2; ++k) {
         if (nodes[k] == NONE) continue;
         if (uUseBricks == 0) {
-            samples[k] = rawRadiance[nodes[k]];
+            samples[k] = vec4(rawRadiance[nodes[k]].rgb, rawAlbedo[nodes[k]].a);
             continue;
         }
         float size = float(1 << (uLevels - levels[k]));
         vec3 local = clamp((p - vec3(unpackCell(nodeCoord[nodes[k]])) * size) / size, 0.0, 1.0);
-        vec3 texel = vec3(brickOrigin(nodes[k])) + 0.5 + local * 2.0;
-        samples[k] = texture(uBrickRadiance, texel / vec3(textureSize(uBrickRadiance, 0)));
+        vec3 uvw = (vec3(brickOrigin(nodes[k])) + 0.5 + local * 2.0) / vec3(textureSize(uBrickRadiance, 0));
+        samples[k] = vec4(texture(uBrickRadiance, uvw).rgb, texture(uBrickAlbedo, uvw).a);
     }
     value = fineLevel == coarseLevel ? samples[1] : mix(samples[0], samples[1], blend);
     return true;

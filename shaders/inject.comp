@@ -9,6 +9,7 @@ layout(local_size_x = 8, local_size_y = 8) in;
 
 layout(binding = 0) uniform sampler2D uLightPosition;  // scene-local, w = 0: no surface
 layout(binding = 1) uniform sampler2D uLightFlux;      // reflected flux per texel, W
+layout(std430, binding = 9) buffer CellArea { float cellArea[]; };
 
 uniform vec3 uVoxelOrigin;  // scene-local position of voxel (0,0,0)
 uniform float uVoxelScale;  // voxels per scene-local unit
@@ -25,24 +26,41 @@ void main() {
     float n = float(1 << uLevels);
     uvec3 cell = uvec3(clamp(floor(voxel), vec3(0.0), vec3(n - 1.0)));
     uint node = findNode(cell, uLevels);
-    if (node == NONE) {
-        // The point rounds into a voxel the conservative voxelization did not mark (only possible
-        // within float rounding of a voxel face): try the nearest neighbour across that face.
-        vec3 f = voxel - floor(voxel);
-        vec3 towards = vec3(f.x < 0.5 ? -1.0 : 1.0, f.y < 0.5 ? -1.0 : 1.0, f.z < 0.5 ? -1.0 : 1.0);
-        vec3 distanceToFace = min(f, 1.0 - f);
-        int axis = distanceToFace.x < distanceToFace.y ? (distanceToFace.x < distanceToFace.z ? 0 : 2)
-                                                       : (distanceToFace.y < distanceToFace.z ? 1 : 2);
-        ivec3 other = ivec3(cell);
-        other[axis] += int(towards[axis]);
-        if (all(greaterThanEqual(other, ivec3(0))) && all(lessThan(other, ivec3(n)))) node = findNode(uvec3(other), uLevels);
-        if (node == NONE) {
-            atomicAdd(listCounts[MISSED_COUNT], 1u);
-            return;
-        }
+    // A point on (or within rounding of) a voxel face belongs to the voxels on both sides: a
+    // surface lying exactly on a voxel boundary has its area split between them by the
+    // voxelization, so its flux is split the same way, in proportion to their surface areas.
+    // The neighbour is also the fallback when rounding moved the point out of the voxel the
+    // conservative voxelization marked.
+    vec3 f = voxel - floor(voxel);
+    vec3 toFace = min(f, 1.0 - f);
+    int axis = toFace.x < toFace.y ? (toFace.x < toFace.z ? 0 : 2) : (toFace.y < toFace.z ? 1 : 2);
+    uint other = NONE;
+    if (toFace[axis] < 1e-3 || node == NONE) {
+        ivec3 neighbour = ivec3(cell);
+        neighbour[axis] += f[axis] < 0.5 ? -1 : 1;
+        if (all(greaterThanEqual(neighbour, ivec3(0))) && all(lessThan(neighbour, ivec3(n))))
+            other = findNode(uvec3(neighbour), uLevels);
     }
-    uint index = (node - uLevelStart[uLevels]) * 6u;
+    if (node == NONE && other == NONE) {
+        atomicAdd(listCounts[MISSED_COUNT], 1u);
+        return;
+    }
+    float share = 1.0;  // of the flux for `node`
+    if (node == NONE) {
+        node = other;
+        other = NONE;
+    } else if (other != NONE) {
+        float a = cellArea[node - uLevelStart[uLevels]], b = cellArea[other - uLevelStart[uLevels]];
+        share = a + b > 0.0 ? a / (a + b) : 0.5;
+    }
     // Clamped so that even an albedo far above 1 (a broken material) cannot wrap a word.
-    for (uint c = 0u; c < 3u; ++c) accumulate64(index + 2u * c, uint(round(min(flux[c] * uFluxScale, 2147483648.0))));
+    vec3 units = min(flux * uFluxScale, vec3(2147483648.0));
+    uint index = (node - uLevelStart[uLevels]) * 6u;
+    for (uint c = 0u; c < 3u; ++c) accumulate64(index + 2u * c, uint(round(units[c] * share)));
     touch(node, uLevels);
+    if (other != NONE && share < 1.0) {
+        index = (other - uLevelStart[uLevels]) * 6u;
+        for (uint c = 0u; c < 3u; ++c) accumulate64(index + 2u * c, uint(round(units[c] * (1.0 - share))));
+        touch(other, uLevels);
+    }
 }

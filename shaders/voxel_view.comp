@@ -15,6 +15,8 @@ layout(rgba32f, binding = 0) uniform writeonly image2D uOutput;
 layout(binding = 0) uniform sampler3D uBrickAlbedo;
 layout(std430, binding = 7) buffer CellAlbedo { uint cellAlbedo[]; };
 layout(std430, binding = 18) buffer CellRadiance { vec4 cellRadiance[]; };
+layout(binding = 1) uniform sampler3D uBrickOpacity;  // the albedo pool: opacity is the geometry's
+layout(std430, binding = 20) buffer RawOpacity { vec4 rawOpacity[]; };
 layout(std430, binding = 12) buffer RawValue { vec4 rawValue[]; };
 
 uniform vec3 uEyeVoxel;      // camera position in voxel space
@@ -26,15 +28,16 @@ uniform int uShowRadiance;   // radiance pool instead of albedo: no face shading
 
 vec4 nodeValue(uint node, int level, vec3 p) {
     if (level == uLevels) {
-        if (uShowRadiance != 0) return cellRadiance[node - uLevelStart[uLevels]];
         vec4 a = unpackUnorm4x8(cellAlbedo[node - uLevelStart[uLevels]]);
+        if (uShowRadiance != 0) return vec4(cellRadiance[node - uLevelStart[uLevels]].rgb, a.a);
         return vec4(a.rgb * a.a, a.a);
     }
-    if (uUseBricks == 0) return rawValue[node];
+    if (uUseBricks == 0) return vec4(rawValue[node].rgb, rawOpacity[node].a);
     float size = float(1 << (uLevels - level));
     vec3 local = clamp((p - vec3(unpackCell(nodeCoord[node])) * size) / size, 0.0, 1.0);  // 0..1 in the node
     vec3 texel = vec3(brickOrigin(node)) + 0.5 + local * 2.0;
-    return texture(uBrickAlbedo, texel / vec3(textureSize(uBrickAlbedo, 0)));
+    vec3 uvw = texel / vec3(textureSize(uBrickAlbedo, 0));
+    return vec4(texture(uBrickAlbedo, uvw).rgb, texture(uBrickOpacity, uvw).a);
 }
 
 void main() {

@@ -13,7 +13,7 @@ using namespace vct;
 
 namespace {
 
-const std::string kSmall = " --width 64 --height 48 --light-view-res 256 ";
+const std::string kSmall = " --width 64 --height 48 --light-view-res 256 --voxel-levels 5 ";
 
 // The error line and nothing that looks like a crash.
 void expectCleanError(const test::CommandResult& result, const std::string& mentions) {

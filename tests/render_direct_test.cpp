@@ -31,7 +31,7 @@ double windowMean(const ImageF& image, int x, int y, int r, int c) {
 ImageF renderTopDown(const std::filesystem::path& model, const std::string& lightOptions, const std::string& extra = "") {
     const auto out = model.parent_path() / "out";
     const auto result = test::runVct("render -q --scene " + model.string() +
-                                     " --eye 0,4,0.0001 --target 0,0,0 --fov 60 --width 96 --height 96 " +
+                                     " --gi off --eye 0,4,0.0001 --target 0,0,0 --fov 60 --width 96 --height 96 " +
                                      lightOptions + " " + extra + " --out " + out.string() + ".png --hdr-out " +
                                      out.string() + ".pfm");
     EXPECT_EQ(result.exitCode, 0) << result.output;
@@ -99,7 +99,7 @@ TEST(DirectLighting, BoxCastsAShadowOnTheFloor) {
     // Camera looks from the side-top so the floor under the slab is visible; sun straight down.
     const auto out = dir / "shadow";
     const auto result = test::runVct("render -q --scene " + model.string() +
-                                     " --eye 0,2.5,3.5 --target 0,0,0 --fov 50 --width 128 --height 96"
+                                     " --gi off --eye 0,2.5,3.5 --target 0,0,0 --fov 50 --width 128 --height 96"
                                      " --sun-dir 0,-1,0 --sun-irradiance 3 --aov direct --hdr-out " + out.string() +
                                      ".pfm --out " + out.string() + ".png");
     ASSERT_EQ(result.exitCode, 0) << result.output;
@@ -126,14 +126,38 @@ TEST(DirectLighting, BoxCastsAShadowOnTheFloor) {
     EXPECT_NEAR(image.at(besideShadow.x, besideShadow.y)[0], lit, 0.02 * lit);
 }
 
-TEST(DirectLighting, TimingsJsonListsEveryPass) {
+namespace {
+nlohmann::json renderTimings(const std::string& options) {
     const auto dir = test::testDir();
     const auto json = dir / "t.json";
-    const auto result = test::runVct("render -q --scene cornell --width 64 --height 48 --light-view-res 256 --frames 2 --out " +
-                                     (dir / "c.png").string() + " --timings " + json.string());
-    ASSERT_EQ(result.exitCode, 0) << result.output;
+    const auto result = test::runVct("render -q --scene cornell --width 64 --height 48 --light-view-res 256 " + options +
+                                     " --out " + (dir / "c.png").string() + " --timings " + json.string());
+    EXPECT_EQ(result.exitCode, 0) << result.output;
     std::ifstream file(json);
-    const auto timings = nlohmann::json::parse(file);
+    return nlohmann::json::parse(file);
+}
+std::vector<std::string> passNames(const nlohmann::json& timings) {
+    std::vector<std::string> names;
+    for (const auto& pass : timings["passes"]) names.push_back(pass["name"]);
+    return names;
+}
+}  // namespace
+
+TEST(DirectLighting, TimingsJsonListsEveryPassOfTheGiFrame) {
+    // First frame: the octree is built; every pass of DESIGN §4 runs once.
+    const auto first = renderTimings("--voxel-levels 5 --frames 1");
+    EXPECT_EQ(passNames(first),
+              (std::vector<std::string>{"voxelize", "svo_build", "svo_leaves", "svo_neighbours", "bricks", "bricks_mip",
+                                        "light_view", "inject", "radiance_mip", "radiance_border", "gbuffer",
+                                        "direct_lighting", "cone_trace", "composite"}));
+    EXPECT_EQ(first["voxels"]["levels"], 5);
+    // Second frame of a static scene: the octree is not built again.
+    const auto second = renderTimings("--voxel-levels 5 --frames 2");
+    EXPECT_EQ(passNames(second).front(), "light_view");
+}
+
+TEST(DirectLighting, TimingsJsonListsEveryPass) {
+    const auto timings = renderTimings("--gi off --frames 2");
     EXPECT_EQ(timings["backend"], "osmesa");
     EXPECT_EQ(timings["width"], 64);
     EXPECT_EQ(timings["height"], 48);

@@ -46,6 +46,7 @@ void PhotonInjection::run(const Octree& octree, RadianceVolume& volume, const Sc
         gl::setUniform(p, "uVoxelOrigin", glm::vec3(octree.grid.localMin));
         gl::setUniform(p, "uVoxelScale", float(1.0 / octree.grid.voxelSize));
         gl::setUniform(p, "uFluxScale", volume.fluxScale);
+        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 9, octree.cellArea.id());
         for (const LightViewMap& map : lightViews) {
             glBindTextureUnit(0, map.position());
             glBindTextureUnit(1, map.flux());

@@ -15,7 +15,7 @@ struct RadianceVolume {
     // Per voxel (cell): 64-bit fixed-point sums of reflected flux (R, G, B: low, high words) and
     // the resulting premultiplied radiance (L·α, α).
     gl::Buffer accumulators;  // 6 uints per cell
-    gl::Buffer cellRadiance;  // vec4 per cell
+    gl::Buffer cellRadiance;  // vec4 per cell (touched ones; the rest 0: read opacity from the octree)
 
     // Touched nodes: a flag per node (all levels and the cells) and, per level, the list of the
     // touched nodes stored at [levelStart[l], levelStart[l] + count[l]) of `touchedList`.

@@ -63,22 +63,28 @@ double psnr(const std::vector<double>& a, const std::vector<double>& b, const Pi
 
 double ssim(const std::vector<double>& a, const std::vector<double>& b, const PixelMask& mask) {
     const int w = mask.width, h = mask.height;
-    std::vector<double> aa(a.size()), bb(a.size()), ab(a.size());
+    // Window statistics over counted pixels only: blur(m·f) / blur(m), m = mask (0/1), so pixels
+    // outside the mask influence nothing, not even the windows of their counted neighbours.
+    std::vector<double> m(a.size()), ma(a.size()), mb(a.size()), maa(a.size()), mbb(a.size()), mab(a.size());
     for (std::size_t i = 0; i < a.size(); ++i) {
-        aa[i] = a[i] * a[i];
-        bb[i] = b[i] * b[i];
-        ab[i] = a[i] * b[i];
+        m[i] = mask.counts[i] ? 1.0 : 0.0;
+        ma[i] = m[i] * a[i];
+        mb[i] = m[i] * b[i];
+        maa[i] = m[i] * a[i] * a[i];
+        mbb[i] = m[i] * b[i] * b[i];
+        mab[i] = m[i] * a[i] * b[i];
     }
-    const auto muA = blur(a, w, h), muB = blur(b, w, h);
-    const auto eAA = blur(aa, w, h), eBB = blur(bb, w, h), eAB = blur(ab, w, h);
+    const auto weight = blur(m, w, h);
+    const auto sA = blur(ma, w, h), sB = blur(mb, w, h);
+    const auto sAA = blur(maa, w, h), sBB = blur(mbb, w, h), sAB = blur(mab, w, h);
     double sum = 0.0;
     for (std::size_t i = 0; i < a.size(); ++i) {
         if (!mask.counts[i]) continue;
-        const double varA = eAA[i] - muA[i] * muA[i];
-        const double varB = eBB[i] - muB[i] * muB[i];
-        const double cov = eAB[i] - muA[i] * muB[i];
-        sum += (2.0 * muA[i] * muB[i] + kC1) * (2.0 * cov + kC2) /
-               ((muA[i] * muA[i] + muB[i] * muB[i] + kC1) * (varA + varB + kC2));
+        const double muA = sA[i] / weight[i], muB = sB[i] / weight[i];
+        const double varA = sAA[i] / weight[i] - muA * muA;
+        const double varB = sBB[i] / weight[i] - muB * muB;
+        const double cov = sAB[i] / weight[i] - muA * muB;
+        sum += (2.0 * muA * muB + kC1) * (2.0 * cov + kC2) / ((muA * muA + muB * muB + kC1) * (varA + varB + kC2));
     }
     return sum / double(mask.countedPixels);
 }

@@ -10,8 +10,9 @@
 // over an 11×11 window with σ = 1.5, then
 //     SSIM = (2 μa μb + C1)(2 σab + C2) / ((μa² + μb² + C1)(σa² + σb² + C2)),
 //     C1 = (0.01·L)², C2 = (0.03·L)², L = 1 (the dynamic range of Y').
-// The window is clipped at the image border and its weights renormalized (no padding), so every
-// pixel has a value and small images work; the reported SSIM is the mean over counted pixels.
+// The window is clipped at the image border and to the mask's counted pixels, and its weights are
+// renormalized (no padding): every pixel has a value, small images work, and pixels outside the
+// mask influence nothing. The reported SSIM is the mean over counted pixels.
 #include <vector>
 
 #include "core/image.hpp"

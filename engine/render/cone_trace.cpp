@@ -47,7 +47,9 @@ void ConeTrace::render(const GBuffer& gbuffer, const Octree& octree, const Radia
     glBindTextureUnit(0, gbuffer.normal());
     glBindTextureUnit(1, gbuffer.position());
     glBindTextureUnit(2, radiance.brickRadiance.id());
+    glBindTextureUnit(3, octree.brickAlbedo.id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 12, radiance.rawRadiance.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 20, octree.rawValue.id());
     glBindImageTexture(0, indirect_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
     glDispatchCompute(GLuint((width_ + 7) / 8), GLuint((height_ + 7) / 8), 1);
     glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);

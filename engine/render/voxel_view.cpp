@@ -41,8 +41,11 @@ void VoxelView::render(const Octree& octree, const Source& source, const Camera&
     gl::setUniform(p, "uUseBricks", useBricks ? 1 : 0);
     gl::setUniform(p, "uShowRadiance", source.radiance ? 1 : 0);
     glBindTextureUnit(0, source.bricks);
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, source.radiance ? 18 : 7, source.cells);
+    glBindTextureUnit(1, octree.brickAlbedo.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 7, octree.cellAlbedo.id());
+    if (source.radiance) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 18, source.cells);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 12, source.raw);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 20, octree.rawValue.id());
     glBindImageTexture(0, image_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
     glDispatchCompute(GLuint((width_ + 7) / 8), GLuint((height_ + 7) / 8), 1);
     glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
