@@ -106,7 +106,7 @@ std::string mapShaderLog(const std::string& log, const std::vector<std::string>&
         if (std::regex_search(line, m, mesa) && m.position(0) == 0)
             line = fileName(m[1]) + ":" + m[2].str() + ":" + m[3].str() + m.suffix().str();
         else if (std::regex_search(line, m, nvidia) && m.position(0) == 0)
-            line = fileName(m[1]) + ":" + m[2].str() + m.suffix().str();
+            line = fileName(m[1]) + ":" + m[2].str() + ":" + m.suffix().str();  // the match ate the colon
         result += line + "\n";
     }
     return result;
