@@ -20,14 +20,14 @@ DeltaLights::DeltaLights(const Scene& scene) {
 }
 
 glm::dvec3 DeltaLights::reflected(const RayScene& rays, const SurfaceHit& hit, glm::vec3 normal,
-                                  glm::vec3 albedo) const {
+                                  glm::vec3 geometricNormal, glm::vec3 albedo) const {
     glm::dvec3 irradiance(0.0);  // Σ E·cosθ·V
     const glm::dvec3 p(hit.position);
     for (const LocalLight& light : lights_) {
         if (light.type == LightType::Directional) {
             const glm::dvec3 toLight = -light.direction;
             const double cosTheta = glm::dot(glm::dvec3(normal), toLight);
-            if (cosTheta <= 0.0) continue;
+            if (cosTheta <= 0.0 || glm::dot(glm::dvec3(geometricNormal), toLight) <= 0.0) continue;
             const glm::vec3 d(toLight);
             if (rays.occluded(hit.spawnPoint(d), glm::normalize(d))) continue;
             irradiance += light.radiometric * cosTheta;
@@ -36,7 +36,7 @@ glm::dvec3 DeltaLights::reflected(const RayScene& rays, const SurfaceHit& hit, g
             const double d2 = std::max(glm::dot(toLightVector, toLightVector), 1e-30);
             const glm::dvec3 toLight = toLightVector / std::sqrt(d2);
             const double cosTheta = glm::dot(glm::dvec3(normal), toLight);
-            if (cosTheta <= 0.0) continue;
+            if (cosTheta <= 0.0 || glm::dot(glm::dvec3(geometricNormal), toLight) <= 0.0) continue;
             const double falloff = spotFalloff(glm::dot(-toLight, light.direction), light.innerDeg, light.outerDeg);
             if (falloff <= 0.0) continue;
             // The shadow ray runs from the offset origin to the light itself, and stops just

@@ -22,9 +22,12 @@ class DeltaLights {
 public:
     explicit DeltaLights(const Scene& scene);  // takes the lights into the scene-local frame
 
-    // Reflected radiance ρ/π · Σ E·cosθ·V at `hit`, with `normal` the shading normal already
-    // turned to face the incoming ray.
-    glm::dvec3 reflected(const RayScene& rays, const SurfaceHit& hit, glm::vec3 normal, glm::vec3 albedo) const;
+    // Reflected radiance ρ/π · Σ E·cosθ·V at `hit`. `normal` is the shading normal and
+    // `geometricNormal` the triangle's normal, both already turned to face the incoming ray: a
+    // light counts only where both see it (cosθ > 0 against the shading normal, and in front of
+    // the triangle itself, so an interpolated normal cannot let light through a closed wall).
+    glm::dvec3 reflected(const RayScene& rays, const SurfaceHit& hit, glm::vec3 normal, glm::vec3 geometricNormal,
+                         glm::vec3 albedo) const;
 
     bool empty() const { return lights_.empty(); }
 

@@ -18,9 +18,10 @@ RadianceSample PathTracer::trace(const Ray& cameraRay, Pcg32& rng) const {
     result.hit = true;
 
     glm::vec3 normal = facing(hit->shadingNormal, cameraRay.direction);
+    glm::vec3 geometric = facing(hit->geometricNormal, cameraRay.direction);
     glm::vec3 albedo = materials_.albedo(hit->material, hit->uv);
     result.direct = glm::dvec3(materials_.emission(hit->material));
-    if (!lights_.empty()) result.direct += lights_.reflected(rays_, *hit, normal, albedo);
+    if (!lights_.empty()) result.direct += lights_.reflected(rays_, *hit, normal, geometric, albedo);
 
     glm::dvec3 throughput(1.0);
     for (int bounce = 1; bounce <= bounces_; ++bounce) {
@@ -34,12 +35,17 @@ RadianceSample PathTracer::trace(const Ray& cameraRay, Pcg32& rng) const {
         }
         const float u1 = rng.uniform(), u2 = rng.uniform();
         const glm::vec3 direction = glm::normalize(sampleCosineHemisphere(normal, u1, u2));
+        // Sampled around the shading normal, the direction may point into the triangle itself
+        // (behind its geometric normal): a reflection cannot go there, the BRDF is 0 (pbrt's
+        // "reflect" test). Continuing would carry light through closed walls.
+        if (glm::dot(direction, geometric) <= 0.0f) break;
         hit = rays_.intersect(hit->spawnPoint(direction), direction);
         if (!hit) break;  // left the scene: the sky is black
         normal = facing(hit->shadingNormal, direction);
+        geometric = facing(hit->geometricNormal, direction);
         albedo = materials_.albedo(hit->material, hit->uv);
         glm::dvec3 radiance(materials_.emission(hit->material));
-        if (!lights_.empty()) radiance += lights_.reflected(rays_, *hit, normal, albedo);
+        if (!lights_.empty()) radiance += lights_.reflected(rays_, *hit, normal, geometric, albedo);
         result.indirect += throughput * radiance;
     }
     return result;

@@ -20,7 +20,10 @@
 // q = min(0.95, max component of the throughput), throughput /= q.
 //
 // Shading normal = interpolated vertex normal turned to face the incoming ray, as in the
-// engine's G-buffer (shaders/material.glsl facingNormal).
+// engine's G-buffer (shaders/material.glsl facingNormal); it gives cosθ and the sampling frame.
+// The triangle's geometric normal (also turned to the incoming ray) decides which side light may
+// come from and leave to: light behind the triangle and bounce directions into it count 0, so
+// interpolated normals that tilt past a wall (smoothed box corners) cannot leak light through it.
 #include <glm/glm.hpp>
 
 #include "reference/camera_rays.hpp"

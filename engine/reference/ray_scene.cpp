@@ -149,6 +149,10 @@ std::optional<SurfaceHit> RayScene::intersect(glm::vec3 origin, glm::vec3 direct
     hit.shadingNormal = nsLength2 > 1e-24f && std::isfinite(nsLength2) ? ns / std::sqrt(nsLength2) : hit.geometricNormal;
     const float magnitude = std::max({maxAbs(a.position), maxAbs(b.position), maxAbs(c.position)});
     hit.offset = std::max(magnitude * kRelativeOffset, minimumOffset_);
+    const glm::vec3 toCentroid = (a.position + b.position + c.position) / 3.0f - hit.position;
+    const float centroidDistance = glm::length(toCentroid);
+    if (centroidDistance > 0.0f && std::isfinite(centroidDistance))  // never past half-way to the centroid
+        hit.inward = toCentroid * (std::min(hit.offset, 0.5f * centroidDistance) / centroidDistance);
     return hit;
 }
 

@@ -32,13 +32,20 @@ struct SurfaceHit {
     glm::vec2 uv{0.0f};
     std::uint32_t material = 0;
     float offset = 0.0f;          // how far to push a new ray's origin off this surface
+    glm::vec3 inward{0.0f};       // towards the triangle's centroid, length ≤ offset (see below)
 
-    // A new ray's origin for leaving the surface towards `direction`: moved along the geometric
-    // normal to that side by `offset`, which scales with the magnitude of the coordinates
-    // (float's rounding error does), so a scene 10⁶ units wide behaves like one at unit scale.
+    // A new ray's origin for leaving the surface towards `direction`:
+    //  * moved along the geometric normal to that side by `offset`, which scales with the
+    //    magnitude of the coordinates (float's rounding error does), so a scene 10⁶ units wide
+    //    behaves like one at unit scale;
+    //  * and moved by `inward` into the triangle, away from its edges. A hit on (or within
+    //    rounding of) an edge where two walls meet at a concave corner would otherwise start the
+    //    next ray on the other wall's plane, where that wall is missed or hit from behind, and
+    //    light leaks through the corner. Hits exactly on edges are common with axis-aligned
+    //    rooms and symmetric cameras (a pixel centre looking straight along a corner).
     glm::vec3 spawnPoint(glm::vec3 direction) const {
         const float side = glm::dot(geometricNormal, direction) >= 0.0f ? 1.0f : -1.0f;
-        return position + geometricNormal * (side * offset);
+        return position + geometricNormal * (side * offset) + inward;
     }
 };
 
