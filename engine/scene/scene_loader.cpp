@@ -580,9 +580,10 @@ Scene loadSponza(const LoadOptions& options) {
     sun.direction = glm::normalize(glm::dvec3(0.25, -1.0, 0.12));
     sun.irradiance = 10.0;  // W/m²
     scene.lights = {sun};
-    // A lit floor of albedo ~0.5 reflects L = 0.5/π · 10 · cosθ ≈ 1.5 W/(m²·sr); 2^-1 maps it to
-    // ≈ 0.8 before tone mapping.
-    scene.exposureEV = -1.0;
+    // A lit floor of albedo ~0.5 reflects L = 0.5/π · 10 · cosθ ≈ 1.5 W/(m²·sr), which the ACES
+    // curve keeps below white at EV 0, while the galleries lit only indirectly (≈ 1/50 of that)
+    // stay visible; at EV −1 they were lost in black.
+    scene.exposureEV = 0.0;
     return scene;
 }
 
