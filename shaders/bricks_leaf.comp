@@ -33,7 +33,8 @@ void main() {
             v = cellRadiance[cell - uLevelStart[uLevels]];
 #else
             vec4 albedo = unpackUnorm4x8(cellAlbedo[cell - uLevelStart[uLevels]]);
-            v = vec4(albedo.rgb * albedo.a, albedo.a);
+            float tau = opticalDepth(albedo.a);
+            v = vec4(albedo.rgb * tau, tau);
 #endif
         }
         cells[slot] = v;

@@ -95,9 +95,10 @@ vec4 traceCone(vec3 origin, vec3 normal, vec3 direction, float tanHalfAngle) {
             t = max(tSkip + 1e-3, t + 1e-3);
             continue;
         }
-        // The sample's opacity holds for one sample spacing (≈ the diameter); correct it for the
-        // step actually taken.
-        float alpha = 1.0 - pow(1.0 - clamp(value.a, 0.0, 0.9999), uConeStep);
+        // value = (L·τ, τ): τ is the optical depth per voxel length, so the step of
+        // uConeStep × diameter voxels has opacity 1 − exp(−τ·step); its radiance is L = rgb/τ.
+        float step = uConeStep * diameter;
+        float alpha = opacityOver(value.a, step);
         vec3 radiance = value.a > 1e-6 ? value.rgb * (alpha / value.a) : vec3(0.0);
         accumulated.rgb += (1.0 - accumulated.a) * radiance;
         accumulated.a += (1.0 - accumulated.a) * alpha;

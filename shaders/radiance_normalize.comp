@@ -2,7 +2,8 @@
 layout(local_size_x = 64) in;
 // inject, last step: per touched voxel, the area-average outgoing radiance of its surface,
 //   L = Σ ρ·Φ / (π · A) + L_emitted      (A: the voxel's surface area in scene units²),
-// stored premultiplied by the voxel's opacity: (L·α, α). Unlit parts of the surface count as
+// stored weighted by the voxel's optical depth τ (voxel_common.glsl): (L·τ, τ), the form the
+// brick filters and the cone tracer use. Unlit parts of the surface count as
 // dark because A is the whole surface inside the voxel, lit or not.
 #define WORK_LIST_TOUCHED
 #include "voxel_common.glsl"
@@ -35,6 +36,6 @@ void main() {
         uvec2 e = cellEmissive[cell];
         radiance += vec3(unpackHalf2x16(e.x), unpackHalf2x16(e.y).x);
     }
-    float alpha = unpackUnorm4x8(cellAlbedo[cell]).a;
-    cellRadiance[cell] = vec4(radiance * alpha, alpha);
+    float tau = opticalDepth(unpackUnorm4x8(cellAlbedo[cell]).a);
+    cellRadiance[cell] = vec4(radiance * tau, tau);
 }

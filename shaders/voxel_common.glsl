@@ -3,6 +3,15 @@
 uint packCell(uvec3 c) { return c.x | (c.y << 10) | (c.z << 20); }
 uvec3 unpackCell(uint p) { return uvec3(p & 1023u, (p >> 10) & 1023u, (p >> 20) & 1023u); }
 
+// Opacity is filtered as optical depth, not as α: a voxel of opacity α has optical depth
+// τ = −ln(1 − α) per voxel length (α capped at 0.999, τ ≤ 6.9). Linear filtering of a density
+// preserves its integral along any line, so a one-voxel wall stays opaque at every coarser level;
+// averaging α instead dilutes it by half per level and wide cones see through walls.
+const float MAX_OPACITY = 0.999;
+float opticalDepth(float alpha) { return -log(1.0 - min(alpha, MAX_OPACITY)); }
+// Opacity of a path of `length` voxels through a medium of density τ per voxel.
+float opacityOver(float tau, float length) { return 1.0 - exp(-tau * length); }
+
 // Octahedral encoding of a unit vector into two 16-bit snorm values.
 uint packNormal(vec3 n) {
     n /= max(abs(n.x) + abs(n.y) + abs(n.z), 1e-30);

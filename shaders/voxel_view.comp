@@ -29,8 +29,9 @@ uniform int uShowRadiance;   // radiance pool instead of albedo: no face shading
 vec4 nodeValue(uint node, int level, vec3 p) {
     if (level == uLevels) {
         vec4 a = unpackUnorm4x8(cellAlbedo[node - uLevelStart[uLevels]]);
-        if (uShowRadiance != 0) return vec4(cellRadiance[node - uLevelStart[uLevels]].rgb, a.a);
-        return vec4(a.rgb * a.a, a.a);
+        float tau = opticalDepth(a.a);
+        if (uShowRadiance != 0) return vec4(cellRadiance[node - uLevelStart[uLevels]].rgb, tau);
+        return vec4(a.rgb * tau, tau);
     }
     if (uUseBricks == 0) return vec4(rawValue[node].rgb, rawOpacity[node].a);
     float size = float(1 << (uLevels - level));
@@ -56,11 +57,9 @@ void main() {
         OctreeHit hit = octreeLookup(p, uEyeVoxel, invDirection, uViewLevel);
         float tExit = max(hit.tExit, t + 1e-4);
         if (hit.node != NONE) {
-            float nodeSize = float(1 << (uLevels - hit.level));
             vec3 middle = uEyeVoxel + direction * (0.5 * (t + tExit));
-            vec4 v = nodeValue(hit.node, hit.level, middle);
-            // Opacity is defined per node width; correct it for the length actually crossed.
-            float alpha = 1.0 - pow(1.0 - clamp(v.a, 0.0, 0.999), (tExit - t) / nodeSize);
+            vec4 v = nodeValue(hit.node, hit.level, middle);  // (value·τ, τ), τ per voxel length
+            float alpha = opacityOver(v.a, tExit - t);
             const float faceShade[3] = float[3](0.8, 1.0, 0.6);
             vec3 albedo = (v.a > 0.0 ? v.rgb / v.a : vec3(0.0)) * (uShowRadiance != 0 ? 1.0 : faceShade[hit.entryAxis]);
             color.rgb += (1.0 - color.a) * alpha * albedo;

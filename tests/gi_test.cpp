@@ -79,10 +79,10 @@ std::filesystem::path writeSolidShell(const std::filesystem::path& dir, const st
 
 }  // namespace
 
-TEST(Gi, ThinWallsFadeAtCoarseLevelsWithIsotropicVoxels) {
-    // The same environment as a one-voxel shell: the documented limit of isotropic filtering.
-    // Recorded (not hidden): wide cones see the walls at coarse levels, where their opacity is
-    // diluted, and leave the volume before they are opaque.
+TEST(Gi, OneVoxelWallsStayMostlyOpaqueAtCoarseLevels) {
+    // The same environment as a shell of one-voxel walls. Averaging opacity would dilute such a
+    // wall by half per level and wide cones would see through it (3 % of π·L when bricks held α);
+    // filtering optical depth keeps most of it. The remaining loss is recorded, not hidden.
     const auto dir = test::testDir();
     const auto model = writeClosedBox(dir, "Kd 0 0 0\nKe 2 2 2\n");
     const ImageF image = renderCli(dir, "thin", "--scene " + model.string() +
@@ -90,8 +90,8 @@ TEST(Gi, ThinWallsFadeAtCoarseLevelsWithIsotropicVoxels) {
                                                     " --height 48 --aov indirect");
     const double fraction = windowMean(image, 24, 24, 6, 1) / (glm::pi<double>() * 2.0);
     std::printf("[ thin     ] one-voxel walls: cones recover %.1f %% of π·L\n", 100.0 * fraction);
-    EXPECT_GT(fraction, 0.0);
-    EXPECT_LT(fraction, 0.9) << "if thin walls are now opaque at coarse levels, update the README's limits section";
+    EXPECT_GT(fraction, 0.6);
+    EXPECT_LT(fraction, 0.97) << "if thin walls are now fully opaque, update the README's limits section";
 }
 
 TEST(Gi, ConstantEnvironmentGivesPiTimesRadianceForEveryConeSet) {
@@ -122,7 +122,10 @@ TEST(Gi, OpenHemisphereSeesNothing) {
     test::ObjWriter obj;
     obj.material("white", glm::vec3(0.8f));
     obj.floor(0.0f, 0.5f);
-    obj.floor(-4.0f, 0.01f, 4.0f, 4.0f);  // far away speck that sets a larger volume around the quad
+    // Far-away specks above and below make the volume much larger than the quad, so the quad is
+    // in open space rather than on a face of the volume.
+    obj.floor(-4.0f, 0.01f, 4.0f, 4.0f);
+    obj.floor(4.0f, 0.01f, -4.0f, -4.0f);
     const auto model = obj.write(dir);
     const std::string view = " --scene " + model.string() +
                              " --voxel-levels 6 --eye 0,1,0.001 --target 0,0,0 --fov 30 --width 32 --height 32"
@@ -214,7 +217,8 @@ TEST(Gi, HalfShadowedVoxelsStoreHalf) {
         const glm::uvec3 c = unpackCell(coords[octree.levelStart[octree.levels] + i]);
         if (std::abs(double(c.y) + 0.5 - origin.y) > 1.0 || c.z < 8 || c.z > 55) continue;  // the floor's voxel layer(s)
         byColumn[int(c.x)].first += radiance[i].x;
-        byColumn[int(c.x)].second += double(albedo[i] >> 24) / 255.0;  // opacity is the geometry's
+        // The radiance is stored weighted by the voxel's optical depth τ (brick_layout.hpp).
+        byColumn[int(c.x)].second += -std::log(1.0 - std::min(double(albedo[i] >> 24) / 255.0, 0.999));
     }
     const int edgeColumn = int(std::floor(origin.x));
     const double litFraction = 1.0 - (origin.x - edgeColumn);

@@ -4,8 +4,11 @@
 //
 // Cells and values. The finest voxels ("cells") are unit cubes [c, c+1)³ of voxel space. An
 // occupied cell has albedo ρ (mean of its fragments) and opacity α = min(1, A) where A is the
-// surface area inside it in voxel-face units (a plane straight through a cell has A = 1). Its
-// value is premultiplied: V(c) = (ρ·α, α). Empty cells have V = 0.
+// surface area inside it in voxel-face units (a plane straight through a cell has A = 1). Bricks
+// filter its optical depth τ = −ln(1 − min(α, 0.999)) (per voxel length), not α: a density
+// filtered linearly keeps its integral along any line, so a one-voxel wall stays opaque at every
+// level (averaging α would halve it per level). The value is weighted by τ: V(c) = (ρ·τ, τ);
+// the radiance pool holds (L·τ, τ). Empty cells have V = 0.
 //
 // Lattice. Level l has nodes of edge e_l = 2^(L−l) voxels and a sample lattice of spacing
 // h_l = e_l / 2: a node's 3×3×3 brick holds the samples at its corners, edge midpoints, face
@@ -29,6 +32,9 @@
 // holds, so hardware trilinear filtering inside any brick is continuous across node borders.
 //
 // Raw node values (for `--no-bricks`): the mean of V over all cells inside the node (empty = 0).
+//
+// Reading: a sample (v·τ, τ) means value v = rgb/τ in a medium of density τ per voxel length; a
+// path of length s voxels through it has opacity 1 − exp(−τ·s).
 //
 // Properties the tests rely on: a region filled with V = v gives S = v everywhere inside it
 // (the weights sum to 1 at every level); the results do not depend on thread order.
