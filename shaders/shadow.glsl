@@ -11,7 +11,11 @@ uniform int uPcfRadius;              // taps per side = 2r + 1
 // depth bias tuned per scene, and it scales with the texel, so it works at any scene scale.
 float shadowVisibility(vec3 p, vec3 n, vec3 toLight, float distanceToLight) {
     float texel = uShadowTexelSize * (uShadowPerspective != 0 ? distanceToLight : 1.0);
-    vec3 offsetPoint = p + n * (1.5 * texel) + toLight * texel;
+    // Slope-scaled: at grazing light one texel of the map spans a long stretch of the surface and
+    // the depth changes a lot across it, so the push off the surface grows with tanθ (capped).
+    float cosTheta = clamp(dot(n, toLight), 0.05, 1.0);
+    float slope = min(sqrt(1.0 - cosTheta * cosTheta) / cosTheta, 4.0);
+    vec3 offsetPoint = p + n * (texel * (1.0 + 0.5 * slope)) + toLight * texel;
     vec4 clip = uLightViewProjection * vec4(offsetPoint, 1.0);
     if (clip.w <= 0.0) return 0.0;
     vec3 ndc = clip.xyz / clip.w;

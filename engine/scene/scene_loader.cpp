@@ -13,6 +13,7 @@
 #include <unordered_set>
 
 #include <assimp/Importer.hpp>
+#include <assimp/config.h>
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
 #include <assimp/version.h>
@@ -459,6 +460,9 @@ Scene loadModelFile(const fs::path& path, const LoadOptions& options) {
     const std::string source = path.string();
 
     Assimp::Importer importer;
+    // Generated normals are smoothed only across edges flatter than 80°: a box made of shared
+    // vertices keeps flat faces instead of diagonal corner normals that light it from inside.
+    importer.SetPropertyFloat(AI_CONFIG_PP_GSN_MAX_SMOOTHING_ANGLE, 80.0f);
     // Triangulate polygons and split meshes by primitive type (so that points and lines can be
     // counted and skipped); then, once non-finite positions are dealt with, share identical
     // vertices and generate normals where the file has none. Node transforms are applied below,
