@@ -90,7 +90,7 @@ TEST(Gi, OneVoxelWallsStayMostlyOpaqueAtCoarseLevels) {
                                                     " --height 48 --aov indirect");
     const double fraction = windowMean(image, 24, 24, 6, 1) / (glm::pi<double>() * 2.0);
     std::printf("[ thin     ] one-voxel walls: cones recover %.1f %% of π·L\n", 100.0 * fraction);
-    EXPECT_GT(fraction, 0.6);
+    EXPECT_GT(fraction, 0.5);
     EXPECT_LT(fraction, 0.97) << "if thin walls are now fully opaque, update the README's limits section";
 }
 

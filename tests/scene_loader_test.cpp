@@ -945,7 +945,7 @@ TEST(Loader, Sponza) {
     EXPECT_EQ(scene.lights[0].type, vct::LightType::Directional);
     EXPECT_LT(scene.lights[0].direction.y, -0.9);
     EXPECT_DOUBLE_EQ(scene.lights[0].irradiance, 10.0);
-    EXPECT_DOUBLE_EQ(scene.exposureEV, -1.0);
+    EXPECT_DOUBLE_EQ(scene.exposureEV, 0.0);
     EXPECT_LT(seconds, 15.0);
 }
 
