@@ -2,7 +2,7 @@
 # One full GI frame of Sponza, every pass of DESIGN §4, at several voxel levels:
 #   bash benchmarks/gi_frame.sh [levels...]       (default: 7 8; 1280×720)
 # Writes benchmarks/results/gi_frame_<renderer>.md and the timing JSON files beside it. Each
-# point renders two frames with --rebuild-octree and reports the second (warm: on llvmpipe the
+# point renders two full frames (--full-frames) and reports the second (warm: on llvmpipe the
 # first use of a shader includes its JIT compilation), so the octree passes are in the table.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -16,7 +16,7 @@ out=benchmarks/results
 mkdir -p "$out"
 for level in "${levels[@]}"; do
   echo "Sponza GI frame at $level levels, ${width}x${height} ($backend)..." >&2
-  ./build/vct render -q --backend "$backend" --scene sponza --voxel-levels "$level" --rebuild-octree --frames 2 \
+  ./build/vct render -q --backend "$backend" --scene sponza --voxel-levels "$level" --full-frames --frames 2 \
     --width "$width" --height "$height" --out "$out/gi_sponza_L$level.png" --timings "$out/gi_sponza_L$level.json"
 done
 /usr/bin/python3 - "$out" "${levels[@]}" <<'PY'

@@ -3,7 +3,7 @@
 # dense 3D texture of the same resolution for comparison. Writes
 # benchmarks/results/svo_build_<renderer>.md and the raw timing JSON files beside it.
 #   bash benchmarks/svo_build.sh [levels...]      (default: 6 7 8 9)
-# Each point builds the octree twice (--rebuild-octree --frames 2) and reports the second, warm
+# Each point builds the octree twice (--full-frames --frames 2) and reports the second, warm
 # build: on llvmpipe the first use of a shader includes its JIT compilation.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -16,7 +16,7 @@ backend="${VCT_BACKEND:-osmesa}"
 for level in "${levels[@]}"; do
   echo "building Sponza at $level levels ($backend)..." >&2
   ./build/vct render -q --backend "$backend" --scene sponza --view voxels --voxel-levels "$level" \
-    --rebuild-octree --frames 2 --width 640 --height 360 --out "$out/svo_sponza_L$level.png" \
+    --full-frames --frames 2 --width 640 --height 360 --out "$out/svo_sponza_L$level.png" \
     --timings "$out/svo_sponza_L$level.json"
 done
 /usr/bin/python3 - "$out" "${levels[@]}" <<'PY'

@@ -5,6 +5,7 @@ uniform vec4 uBaseColor;    // linear albedo, alpha
 uniform vec3 uEmissive;     // emitted radiance W/(m²·sr)
 uniform float uAlphaCutoff; // < 0: opaque material
 uniform int uHasTexture;
+uniform int uMaterialIndex; // into the materials buffer (GpuScene)
 
 // Linear albedo and alpha at `uv`; discards texels that an alpha mask cuts away.
 vec4 materialBaseColor(vec2 uv) {
@@ -24,12 +25,13 @@ vec3 facingNormal(vec3 interpolated, vec3 position, vec3 towards) {
     return dot(n, towards) < 0.0 ? -n : n;
 }
 
-// Base colour with explicit texture derivatives, for passes without screen-space derivatives
-// (voxelization samples at a clipped-polygon centroid). Does not discard: the caller decides.
-vec4 materialBaseColorGrad(vec2 uv, vec2 dUvdx, vec2 dUvdy) {
-    vec4 color = uBaseColor;
-    if (uHasTexture != 0) color *= textureGrad(uBaseColorTexture, uv, dUvdx, dUvdy);
-    return color;
+// The texture's colour alone (white without a texture) and the full alpha (material × texel),
+// with explicit texture derivatives, for passes without screen-space derivatives (voxelization
+// samples at a clipped-polygon centroid; the material's colour factor is applied later, by
+// index, so that changing it needs no new voxelization). Does not discard: the caller decides.
+vec4 materialTextureGrad(vec2 uv, vec2 dUvdx, vec2 dUvdy) {
+    vec4 texel = uHasTexture != 0 ? textureGrad(uBaseColorTexture, uv, dUvdx, dUvdy) : vec4(1.0);
+    return vec4(texel.rgb, texel.a * uBaseColor.a);
 }
 
 bool materialCutsAway(float alpha) { return uAlphaCutoff >= 0.0 && alpha < uAlphaCutoff; }

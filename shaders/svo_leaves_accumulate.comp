@@ -11,7 +11,7 @@ layout(local_size_x = 64) in;
 
 layout(rgba32ui, binding = 0) uniform readonly uimageBuffer uFragments;
 layout(r32ui, binding = 1) uniform readonly uimageBuffer uFragmentNode;  // the fragment's cell node
-layout(rg32ui, binding = 2) uniform readonly uimageBuffer uFragmentEmissive;
+layout(std430, binding = 21) buffer Materials { vec4 materials[]; };  // {baseColor, emissive} per material
 layout(r32ui, binding = 3) uniform uimageBuffer uAccumulators;  // ACC_FIELDS per cell
 
 uniform uint uFragmentCount;
@@ -32,8 +32,10 @@ void main() {
     uvec4 fragment = imageLoad(uFragments, int(f));
     uint cell = imageLoad(uFragmentNode, int(f)).x - uLevelStart[uLevels];
     int base = int(cell) * ACC_FIELDS;
-    vec4 albedo = unpackUnorm4x8(fragment.y);
-    uvec3 albedo8 = uvec3(round(albedo.rgb * 255.0));
+    uint material = fragment.w >> 16;
+    float area = unpackHalf2x16(fragment.w & 0xFFFFu).x;
+    vec3 albedo = clamp(unpackUnorm4x8(fragment.y).rgb * materials[2u * material].rgb, 0.0, 1.0);
+    uvec3 albedo8 = uvec3(round(albedo * 255.0));
     ivec3 normal = ivec3(round(unpackNormal(fragment.z) * 127.0));
     imageAtomicAdd(uAccumulators, base + 0, 1u);
     imageAtomicAdd(uAccumulators, base + 1, albedo8.r);
@@ -42,10 +44,9 @@ void main() {
     imageAtomicAdd(uAccumulators, base + 4, uint(normal.x));
     imageAtomicAdd(uAccumulators, base + 5, uint(normal.y));
     imageAtomicAdd(uAccumulators, base + 6, uint(normal.z));
-    add64(base + 7, uint(round(uintBitsToFloat(fragment.w) * AREA_SCALE)));
+    add64(base + 7, uint(round(area * AREA_SCALE)));
     if (uHasEmissive != 0) {
-        uvec2 e = imageLoad(uFragmentEmissive, int(f)).xy;
-        vec3 emission = vec3(unpackHalf2x16(e.x), unpackHalf2x16(e.y).x);
+        vec3 emission = materials[2u * material + 1u].rgb;
         for (int c = 0; c < 3; ++c) add64(base + 9 + 2 * c, uint(round(max(emission[c], 0.0) * uEmissiveScale)));
     }
 }

@@ -20,12 +20,12 @@ flat in vec3 gN1;
 flat in vec3 gN2;
 
 layout(std430, binding = 0) buffer FragmentCounter { uint fragmentCount; };
-layout(rgba32ui, binding = 0) uniform writeonly uimageBuffer uFragments;        // cell, albedo, normal, area
-layout(rg32ui, binding = 1) uniform writeonly uimageBuffer uFragmentEmissive;   // half4 emitted radiance
+// Per fragment: cell, texture colour RGBA8 (the material's colour factor and emission are applied
+// by svo_leaves), normal (octahedral), material index << 16 | area (half float).
+layout(rgba32ui, binding = 0) uniform writeonly uimageBuffer uFragments;
 
 uniform uint uCapacity;
 uniform int uResolution;
-uniform int uWriteEmissive;
 
 const float kEps = 1e-4;  // voxels; keeps the coverage conservative under float rounding
 const int kMaxPolygon = 9;
@@ -87,7 +87,7 @@ void main() {
     vec2 uv = gUv0 + s * (gUv1 - gUv0) + t * (gUv2 - gUv0);
     vec2 dUvdx = (e2.y * (gUv1 - gUv0) - e1.y * (gUv2 - gUv0)) / det;
     vec2 dUvdy = (-e2.x * (gUv1 - gUv0) + e1.x * (gUv2 - gUv0)) / det;
-    vec4 base = materialBaseColorGrad(uv, dUvdx, dUvdy);
+    vec4 base = materialTextureGrad(uv, dUvdx, dUvdy);
     if (materialCutsAway(base.a)) discard;
     vec3 normal = gN0 + s * (gN1 - gN0) + t * (gN2 - gN0);
     if (!(dot(normal, normal) > 1e-24)) normal = vec3(0.0, 0.0, 1.0);
@@ -104,10 +104,8 @@ void main() {
         uvec3 cell = unproject(uvec3(uvec2(pixel), uint(k)), gAxis);
         uint index = atomicAdd(fragmentCount, 1u);
         if (index < uCapacity) {
-            imageStore(uFragments, int(index), uvec4(packCell(cell), albedo, packedNormal, floatBitsToUint(area)));
-            if (uWriteEmissive != 0)
-                imageStore(uFragmentEmissive, int(index),
-                           uvec4(packHalf2x16(uEmissive.rg), packHalf2x16(vec2(uEmissive.b, 0.0)), 0u, 0u));
+            uint materialAndArea = (uint(uMaterialIndex) << 16) | (packHalf2x16(vec2(area, 0.0)) & 0xFFFFu);
+            imageStore(uFragments, int(index), uvec4(packCell(cell), albedo, packedNormal, materialAndArea));
         }
     }
 }

@@ -151,13 +151,18 @@ TEST(DirectLighting, TimingsJsonListsEveryPassOfTheGiFrame) {
                                         "light_view", "inject", "radiance_mip", "radiance_border", "gbuffer",
                                         "direct_lighting", "cone_trace", "composite"}));
     EXPECT_EQ(first["voxels"]["levels"], 5);
-    // Second frame of a static scene: the octree is not built again.
+    // Second frame of a static scene: nothing changed, so no pass runs at all, and the graph says so.
     const auto second = renderTimings("--voxel-levels 5 --frames 2");
-    EXPECT_EQ(passNames(second).front(), "light_view");
+    EXPECT_TRUE(passNames(second).empty());
+    ASSERT_EQ(second["graph"].size(), 15u);
+    for (const auto& pass : second["graph"]) {
+        EXPECT_FALSE(pass["ran"].get<bool>()) << pass["name"];
+        EXPECT_FALSE(pass["reason"].get<std::string>().empty());
+    }
 }
 
 TEST(DirectLighting, TimingsJsonListsEveryPass) {
-    const auto timings = renderTimings("--gi off --frames 2");
+    const auto timings = renderTimings("--gi off --full-frames --frames 2");
     EXPECT_EQ(timings["backend"], "osmesa");
     EXPECT_EQ(timings["width"], 64);
     EXPECT_EQ(timings["height"], 48);

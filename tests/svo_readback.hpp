@@ -1,6 +1,7 @@
 #pragma once
 // Builds a sparse voxel octree in-process on OSMesa and reads everything back to the CPU, so tests
 // can compare the GPU's structure and values with tests/reference/.
+#include <cmath>
 #include <cstring>
 #include <map>
 #include <memory>
@@ -13,6 +14,13 @@
 #include "voxel/svo_builder.hpp"
 
 namespace vct::test {
+
+inline float halfToFloat(std::uint16_t h) {
+    const int exponent = (h >> 10) & 31, mantissa = h & 1023;
+    const float value = exponent == 0 ? std::ldexp(float(mantissa), -24)
+                                      : std::ldexp(float(mantissa | 1024), exponent - 25);
+    return (h & 0x8000) ? -value : value;
+}
 
 template <class T>
 std::vector<T> readBuffer(const gl::Buffer& buffer, std::size_t count) {
@@ -31,7 +39,7 @@ struct GpuOctreeData {
     std::vector<float> brickPool;  // RGBA, (3·bx) × (3·by) × (3·bz)
     glm::ivec3 brickPoolBricks{0};
     // Fragment list: cell and albedo of every fragment.
-    std::vector<std::uint32_t> fragmentCell, fragmentAlbedo;
+    std::vector<std::uint32_t> fragmentCell, fragmentAlbedo, fragmentMaterial;  // albedo: the texture's colour
     std::vector<float> fragmentArea;
 
     std::uint32_t cellIndexOf(std::uint32_t node) const { return node - levelStart[levels]; }
@@ -92,9 +100,8 @@ private:
         for (std::size_t i = 0; i < f.count; ++i) {
             d.fragmentCell.push_back(raw[i * 4]);
             d.fragmentAlbedo.push_back(raw[i * 4 + 1]);
-            float area;
-            std::memcpy(&area, &raw[i * 4 + 3], 4);
-            d.fragmentArea.push_back(area);
+            d.fragmentMaterial.push_back(raw[i * 4 + 3] >> 16);
+            d.fragmentArea.push_back(halfToFloat(std::uint16_t(raw[i * 4 + 3] & 0xFFFF)));
         }
         return d;
     }

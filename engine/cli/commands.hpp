@@ -13,5 +13,6 @@ Run addRenderCommand(CLI::App& app);
 Run addInfoCommand(CLI::App& app);
 Run addReferenceCommand(CLI::App&);
 Run addCompareCommand(CLI::App&);
+Run addViewCommand(CLI::App&);
 
 }  // namespace vct::cli

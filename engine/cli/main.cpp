@@ -23,6 +23,7 @@ int main(int argc, char** argv) {
     cli::Run info = cli::addInfoCommand(app);
     cli::Run reference = cli::addReferenceCommand(app);
     cli::Run compare = cli::addCompareCommand(app);
+    cli::Run view = cli::addViewCommand(app);
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {
@@ -35,6 +36,7 @@ int main(int argc, char** argv) {
         if (app.got_subcommand("info")) info();
         if (app.got_subcommand("reference")) reference();
         if (app.got_subcommand("compare")) compare();
+        if (app.got_subcommand("view")) view();
     } catch (const Error& e) {
         std::fprintf(stderr, "vct: error: %s\n", e.what());
         return 1;

@@ -32,12 +32,28 @@ struct RenderOptions {
     int voxelLevels = 8;
     int voxelViewLevel = 0;
     bool noBricks = false;
-    bool rebuildOctree = false;
+    bool fullFrames = false;
+    std::string lightPath;
     std::string gi = "on";
     bool noPhotons = false;
     ConeSettings cones;
     float giScale = 1.0f;
 };
+
+// The lights turned by `turn` (0..1 of a full circle) around the vertical axis through the scene's
+// centre: directions rotate, spot positions orbit.
+std::vector<Light> orbit(const std::vector<Light>& lights, const Scene& scene, double turn) {
+    const double angle = turn * 2.0 * 3.14159265358979323846;
+    const double c = std::cos(angle), s = std::sin(angle);
+    auto rotate = [&](glm::dvec3 v) { return glm::dvec3(c * v.x + s * v.z, v.y, -s * v.x + c * v.z); };
+    std::vector<Light> turned = lights;
+    const glm::dvec3 centre = scene.worldBounds.centre();
+    for (Light& l : turned) {
+        l.direction = rotate(l.direction);
+        l.position = centre + rotate(l.position - centre);
+    }
+    return turned;
+}
 
 void run(const RenderOptions& o) {
     if (o.frames < 1 || o.frames > 100000) fail("--frames ", o.frames, " is out of range; use 1..100000");
@@ -57,7 +73,9 @@ void run(const RenderOptions& o) {
     settings.voxelLevels = o.voxelLevels;
     settings.voxelViewLevel = o.voxelViewLevel;
     settings.bricks = !o.noBricks;
-    settings.rebuildOctreeEveryFrame = o.rebuildOctree;
+    settings.fullFrames = o.fullFrames;
+    if (!o.lightPath.empty() && o.lightPath != "orbit")
+        fail("unknown --light-path '", o.lightPath, "'; the only path is orbit");
     if (o.gi != "on" && o.gi != "off") fail("--gi must be on or off, not '", o.gi, "'");
     settings.gi = o.gi == "on";
     settings.photons = !o.noPhotons;
@@ -73,7 +91,11 @@ void run(const RenderOptions& o) {
 
     auto context = gl::createContext(backend);
     Renderer renderer(scene, settings);
-    for (int frame = 0; frame < o.frames; ++frame) renderer.renderFrame(camera);
+    const std::vector<Light> startLights = renderer.lights();
+    for (int frame = 0; frame < o.frames; ++frame) {
+        if (!o.lightPath.empty() && frame > 0) renderer.setLights(orbit(startLights, scene, double(frame) / o.frames));
+        renderer.renderFrame(camera);
+    }
 
     const ImageF hdr = renderer.readHdr();
     std::size_t nonFinite = 0;
@@ -82,7 +104,8 @@ void run(const RenderOptions& o) {
     writePng(o.out, renderer.readLdr());
     if (!o.hdrOut.empty()) writeHdrImage(o.hdrOut, hdr);
 
-    TimingsReport report{context->info(), o.width, o.height, {}, renderer.memory(), std::nullopt};
+    TimingsReport report{context->info(), o.width, o.height, {}, renderer.memory(), std::nullopt,
+                         renderer.lastFrame(), renderer.statistics()};
     if (renderer.octree()) {
         report.voxels = renderer.octree()->memory();
         if (logLevel() >= LogLevel::Info) std::printf("%s", formatVoxelMemory(*report.voxels).c_str());
@@ -138,8 +161,12 @@ Run addRenderCommand(CLI::App& app) {
     command->add_option("--voxel-level", o.voxelViewLevel,
                         "octree level shown by --view voxels (1..L; default L, the voxels themselves)");
     command->add_flag("--no-bricks", o.noBricks, "raw node values instead of filtered bricks (cones and voxel views)");
-    command->add_flag("--rebuild-octree", o.rebuildOctree,
-                      "build the octree again every frame (benchmarks: with --frames 2, a warm build is timed)");
+    command->add_flag("--full-frames", o.fullFrames,
+                      "run every pass every frame, as if the geometry changed (benchmarks: with --frames 2 a "
+                      "warm full frame is timed); otherwise a frame re-runs only what changed");
+    command->add_option("--light-path", o.lightPath,
+                        "orbit: the lights turn once around the vertical axis over --frames frames (the octree is "
+                        "reused; only light-dependent passes re-run)");
     return [options] { run(*options); };
 }
 

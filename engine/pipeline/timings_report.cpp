@@ -19,6 +19,11 @@ std::string formatTimingsTable(const TimingsReport& report) {
         std::snprintf(line, sizeof line, "%-18s %10.3f %10.3f\n", pass.name.c_str(), pass.gpuMs, pass.cpuMs);
         out += line;
     }
+    for (const PassRun& run : report.graph)
+        if (!run.ran) {
+            std::snprintf(line, sizeof line, "%-18s %21s   (%s)\n", run.name.c_str(), "skipped", run.reason.c_str());
+            out += line;
+        }
     std::snprintf(line, sizeof line, "%-18s %10.3f %10.3f   (%s, %dx%d)\n", "total", report.timings.totalGpuMs,
                   report.timings.totalCpuMs, report.context.renderer.c_str(), report.width, report.height);
     out += line;
@@ -46,6 +51,15 @@ void writeTimingsJson(const std::filesystem::path& path, const TimingsReport& re
         total += pool.bytes;
     }
     json["memory_total_bytes"] = total;
+    json["graph"] = nlohmann::json::array();
+    for (const PassRun& run : report.graph)
+        json["graph"].push_back({{"name", run.name}, {"ran", run.ran}, {"reason", run.reason}});
+    const FrameStatistics& s = report.statistics;
+    json["statistics"] = {{"light_views_rendered", s.lightViewsRendered},
+                          {"light_views", s.lightViewsTotal},
+                          {"touched_nodes_per_level", s.touchedNodesPerLevel},
+                          {"nodes_per_level", s.nodesPerLevel},
+                          {"photons_missed", s.photonsMissed}};
     if (report.voxels) {
         const VoxelMemoryReport& v = *report.voxels;
         json["voxels"] = {{"levels", int(v.nodesPerLevel.size()) - 1},

@@ -7,6 +7,9 @@
 //     "total_gpu_ms": num,       GPU time from the first pass's start to the last pass's end
 //     "total_cpu_ms": num,       sum of the passes' CPU submission times
 //     "memory": [ { "name": str, "bytes": int } ], "memory_total_bytes": int,
+//     "graph": [ { "name": str, "ran": bool, "reason": str } ],   every pass, ran or skipped, and why
+//     "statistics": { "light_views_rendered": int, "light_views": int,
+//                     "touched_nodes_per_level": [int], "nodes_per_level": [int], "photons_missed": int },
 //     "voxels": {              only when the frame built the octree
 //        "levels": int, "fragments": int, "fragment_list_regrowths": int, "max_fragments_in_voxel": int,
 //        "nodes_per_level": [int],  levels 0..L, the last = occupied voxels
@@ -31,6 +34,8 @@ struct TimingsReport {
     gl::FrameTimings timings;
     std::vector<MemoryPool> memory;
     std::optional<VoxelMemoryReport> voxels;
+    std::vector<PassRun> graph;
+    FrameStatistics statistics;
 };
 
 std::string formatTimingsTable(const TimingsReport& report);

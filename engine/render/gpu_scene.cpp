@@ -52,11 +52,32 @@ GpuScene::GpuScene(const Scene& scene) : vertexArray_(gl::createVertexArray()) {
         textures_.push_back(std::move(gpu));
     }
 
-    for (const Material& material : scene.materials)
-        materials_.push_back({material.baseColor, material.baseAlpha, material.emissive,
-                              material.alphaMode == AlphaMode::Mask ? material.alphaCutoff : -1.0f,
-                              material.baseColorTexture});
+    if (scene.materials.size() > 65536)
+        fail("the scene has ", scene.materials.size(), " materials; vct supports at most 65,536 (voxel fragments keep "
+             "a 16-bit material index). Merge materials in the model");
+    materialBuffer_ = gl::createBuffer(GLsizeiptr(std::max<std::size_t>(scene.materials.size(), 1) * 32), nullptr,
+                                       GL_DYNAMIC_STORAGE_BIT, "materials");
+    for (std::size_t i = 0; i < scene.materials.size(); ++i) {
+        materials_.push_back({});
+        setMaterial(i, scene.materials[i]);
+    }
     ranges_ = scene.drawRanges;
+}
+
+void GpuScene::setMaterial(std::size_t index, const Material& material) {
+    materials_.at(index) = {material.baseColor, material.baseAlpha, material.emissive,
+                            material.alphaMode == AlphaMode::Mask ? material.alphaCutoff : -1.0f,
+                            material.baseColorTexture};
+    const glm::vec4 values[2] = {glm::vec4(material.baseColor, material.baseAlpha), glm::vec4(material.emissive, 0.0f)};
+    glNamedBufferSubData(materialBuffer_.id(), GLintptr(index * sizeof values), sizeof values, values);
+}
+
+bool GpuScene::hasEmission() const { return maxEmission() > 0.0f; }
+
+float GpuScene::maxEmission() const {
+    float m = 0.0f;
+    for (const GpuMaterial& material : materials_) m = std::max({m, material.emissive.x, material.emissive.y, material.emissive.z});
+    return m;
 }
 
 void GpuScene::draw(GLuint program, GLuint textureUnit) const {
@@ -64,6 +85,7 @@ void GpuScene::draw(GLuint program, GLuint textureUnit) const {
     gl::setUniform(program, "uBaseColorTexture", int(textureUnit));
     for (const DrawRange& range : ranges_) {
         const GpuMaterial& m = materials_[range.material];
+        gl::setUniform(program, "uMaterialIndex", int(range.material));
         gl::setUniform(program, "uBaseColor", glm::vec4(m.baseColor, m.baseAlpha));
         gl::setUniform(program, "uEmissive", m.emissive);
         gl::setUniform(program, "uAlphaCutoff", m.alphaCutoff);

@@ -2,7 +2,10 @@
 // The scene's geometry and materials on the GPU: one interleaved vertex buffer, one index
 // buffer sorted by material, and one mipmapped sRGB texture per base-colour image. Every pass
 // that rasterizes the scene (G-buffer, light-view map, and later voxelization) draws it through
-// draw(), which sets the material uniforms declared in shaders/material.glsl.
+// draw(), which sets the material uniforms declared in shaders/material.glsl. The same material
+// values also live in a storage buffer (binding 21, one {baseColor, emissive} pair per material)
+// for the passes that look materials up by index (svo_leaves), so that changing a material's
+// colour needs no new voxelization.
 #include <cstddef>
 #include <vector>
 
@@ -21,6 +24,12 @@ public:
 
     std::size_t bytes() const { return bytes_; }
 
+    // Replaces material `index`'s colour, alpha and emission (textures stay).
+    void setMaterial(std::size_t index, const Material& material);
+    GLuint materialBuffer() const { return materialBuffer_.id(); }
+    bool hasEmission() const;
+    float maxEmission() const;  // largest emitted radiance component of any material
+
 private:
     struct GpuMaterial {
         glm::vec3 baseColor;
@@ -35,6 +44,8 @@ private:
     gl::Buffer indices_;
     std::vector<gl::Texture> textures_;
     std::vector<GpuMaterial> materials_;
+    gl::Buffer materialBuffer_;
+    void uploadMaterial(std::size_t index);
     std::vector<DrawRange> ranges_;
     std::size_t bytes_ = 0;
 };

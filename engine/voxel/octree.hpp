@@ -14,20 +14,17 @@ namespace vct {
 
 constexpr int kMaxOctreeLevels = 11;  // node levels 0..L−1 plus the cell level L, L ≤ 10
 
-// Voxel fragments: one RGBA32UI texel each (cell, albedo RGBA8, normal oct16, area float bits)
-// in a buffer texture, so the list may exceed the SSBO size limit; emission (half RGB) beside
-// it only when the scene has emissive materials.
+// Voxel fragments: one RGBA32UI texel each (cell, texture colour RGBA8, normal oct16,
+// material index << 16 | area as half float) in a buffer texture, so the list may exceed the
+// SSBO size limit. Material colour and emission are looked up by index in svo_leaves.
 struct FragmentList {
     gl::Buffer data;
     gl::Texture dataTexture;
-    gl::Buffer emissive;
-    gl::Texture emissiveTexture;
     gl::Buffer counter;
     std::uint32_t count = 0;
     std::uint32_t capacity = 0;
-    bool hasEmissive = false;
     int regrowths = 0;  // times the list was too small and voxelization ran again
-    std::size_t bytes() const { return std::size_t(capacity) * (16 + (hasEmissive ? 8 : 0)); }
+    std::size_t bytes() const { return std::size_t(capacity) * 16; }
 };
 
 struct Octree {

@@ -8,36 +8,48 @@
 namespace vct {
 
 void SvoBuilder::build(const GpuScene& gpuScene, const Scene& scene, int levels, gl::GpuTimer& timer) {
-    const VoxelGrid grid = makeVoxelGrid(scene, levels);
-    float maxEmission = 0.0f;
-    for (const Material& m : scene.materials)
-        maxEmission = std::max({maxEmission, m.emissive.x, m.emissive.y, m.emissive.z});
     {
         gl::GpuTimer::Scope pass(timer, "voxelize");
-        voxelizer_.run(gpuScene, scene, grid, fragments_);
+        voxelize(gpuScene, scene, levels);
     }
     {
         gl::GpuTimer::Scope pass(timer, "svo_build");
-        build_.run(fragments_, grid, octree_);
+        buildStructure();
     }
     {
         gl::GpuTimer::Scope pass(timer, "svo_leaves");
-        leafStatistics_ = leaves_.run(fragments_, build_.fragmentNodeTexture(), maxEmission, octree_);
+        leaves(gpuScene);
     }
     {
         gl::GpuTimer::Scope pass(timer, "svo_neighbours");
-        neighbours_.run(octree_);
+        neighbours();
     }
-    PartialBricks leafPartial;
     {
         gl::GpuTimer::Scope pass(timer, "bricks");
-        leafPartial = bricks_.run(octree_);
+        bricks();
     }
     {
         gl::GpuTimer::Scope pass(timer, "bricks_mip");
-        bricksMip_.run(octree_, std::move(leafPartial));
+        bricksMip();
     }
 }
+
+void SvoBuilder::voxelize(const GpuScene& gpuScene, const Scene& scene, int levels) {
+    grid_ = makeVoxelGrid(scene, levels);
+    voxelizer_.run(gpuScene, scene, grid_, fragments_);
+}
+
+void SvoBuilder::buildStructure() { build_.run(fragments_, grid_, octree_); }
+
+void SvoBuilder::leaves(const GpuScene& gpuScene) {
+    leafStatistics_ = leaves_.run(fragments_, build_.fragmentNodeTexture(), gpuScene, octree_);
+}
+
+void SvoBuilder::neighbours() { neighbours_.run(octree_); }
+
+void SvoBuilder::bricks() { leafPartial_ = bricks_.run(octree_); }
+
+void SvoBuilder::bricksMip() { bricksMip_.run(octree_, std::move(leafPartial_)); }
 
 VoxelMemoryReport SvoBuilder::memory() const {
     VoxelMemoryReport r;

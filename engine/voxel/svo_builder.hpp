@@ -27,7 +27,16 @@ struct VoxelMemoryReport {
 class SvoBuilder {
 public:
     SvoBuilder() = default;
+    // All six passes in order, each timed.
     void build(const GpuScene& gpuScene, const Scene& scene, int levels, gl::GpuTimer& timer);
+
+    // The passes one by one (for the pass graph, which may re-run only some of them).
+    void voxelize(const GpuScene& gpuScene, const Scene& scene, int levels);
+    void buildStructure();
+    void leaves(const GpuScene& gpuScene);
+    void neighbours();
+    void bricks();
+    void bricksMip();
 
     const Octree& octree() const { return octree_; }
     const FragmentList& fragments() const { return fragments_; }
@@ -44,6 +53,8 @@ private:
     FragmentList fragments_;
     Octree octree_;
     LeafStatistics leafStatistics_;
+    VoxelGrid grid_;
+    PartialBricks leafPartial_;
 };
 
 std::string formatVoxelMemory(const VoxelMemoryReport& report);

@@ -13,8 +13,10 @@ SvoLeaves::SvoLeaves()
     : accumulate_(gl::buildProgram({{GL_COMPUTE_SHADER, "svo_leaves_accumulate.comp"}})),
       normalize_(gl::buildProgram({{GL_COMPUTE_SHADER, "svo_leaves_normalize.comp"}})) {}
 
-LeafStatistics SvoLeaves::run(const FragmentList& fragments, GLuint fragmentNodeTexture, float maxEmission,
+LeafStatistics SvoLeaves::run(const FragmentList& fragments, GLuint fragmentNodeTexture, const GpuScene& gpuScene,
                               Octree& octree) {
+    const float maxEmission = gpuScene.maxEmission();
+    const bool emissive = maxEmission > 0.0f;
     const std::uint32_t cells = octree.cellCount();
     GLint maxTexels = 0;
     glGetIntegerv(GL_MAX_TEXTURE_BUFFER_SIZE, &maxTexels);
@@ -28,7 +30,7 @@ LeafStatistics SvoLeaves::run(const FragmentList& fragments, GLuint fragmentNode
     gl::Texture accumulatorTexture = gl::createTexture(GL_TEXTURE_BUFFER, "cell accumulators");
     glTextureBuffer(accumulatorTexture.id(), GL_R32UI, accumulators.id());
 
-    octree.hasEmissive = fragments.hasEmissive;
+    octree.hasEmissive = emissive;
     const float emissiveScale = maxEmission > 0.0f ? 16777216.0f / maxEmission : 0.0f;
     const GLbitfield barrier = GL_SHADER_STORAGE_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT;
 
@@ -36,12 +38,11 @@ LeafStatistics SvoLeaves::run(const FragmentList& fragments, GLuint fragmentNode
     glUseProgram(p);
     octree.bind(p);
     gl::setUniform(p, "uFragmentCount", fragments.count);
-    gl::setUniform(p, "uHasEmissive", fragments.hasEmissive ? 1 : 0);
+    gl::setUniform(p, "uHasEmissive", emissive ? 1 : 0);
     gl::setUniform(p, "uEmissiveScale", emissiveScale);
     glBindImageTexture(0, fragments.dataTexture.id(), 0, GL_FALSE, 0, GL_READ_ONLY, GL_RGBA32UI);
     glBindImageTexture(1, fragmentNodeTexture, 0, GL_FALSE, 0, GL_READ_ONLY, GL_R32UI);
-    if (fragments.hasEmissive)
-        glBindImageTexture(2, fragments.emissiveTexture.id(), 0, GL_FALSE, 0, GL_READ_ONLY, GL_RG32UI);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 21, gpuScene.materialBuffer());
     glBindImageTexture(3, accumulatorTexture.id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_R32UI);
     gl::dispatch1D(fragments.count, 64);
     glMemoryBarrier(barrier);
@@ -51,7 +52,7 @@ LeafStatistics SvoLeaves::run(const FragmentList& fragments, GLuint fragmentNode
     octree.cellNormal = gl::createBuffer(bytes, nullptr, 0, "cell normal");
     octree.cellArea = gl::createBuffer(bytes, nullptr, 0, "cell area");
     octree.cellFragments = gl::createBuffer(bytes, nullptr, 0, "cell fragments");
-    if (fragments.hasEmissive) octree.cellEmissive = gl::createBuffer(bytes * 2, nullptr, 0, "cell emission");
+    if (emissive) octree.cellEmissive = gl::createBuffer(bytes * 2, nullptr, 0, "cell emission");
     else octree.cellEmissive.reset();
     gl::Buffer status = gl::createBuffer(8, nullptr, GL_DYNAMIC_STORAGE_BIT, "leaf status");
     const std::uint32_t zeros[2] = {0, 0};
@@ -60,7 +61,7 @@ LeafStatistics SvoLeaves::run(const FragmentList& fragments, GLuint fragmentNode
     p = normalize_.id();
     glUseProgram(p);
     octree.bind(p);
-    gl::setUniform(p, "uHasEmissive", fragments.hasEmissive ? 1 : 0);
+    gl::setUniform(p, "uHasEmissive", emissive ? 1 : 0);
     gl::setUniform(p, "uEmissiveScale", emissiveScale);
     glBindImageTexture(3, accumulatorTexture.id(), 0, GL_FALSE, 0, GL_READ_ONLY, GL_R32UI);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 6, status.id());
@@ -68,7 +69,7 @@ LeafStatistics SvoLeaves::run(const FragmentList& fragments, GLuint fragmentNode
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 8, octree.cellNormal.id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 9, octree.cellArea.id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 10, octree.cellFragments.id());
-    if (fragments.hasEmissive) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 11, octree.cellEmissive.id());
+    if (emissive) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 11, octree.cellEmissive.id());
     gl::dispatch1D(cells, 64);
     glMemoryBarrier(barrier | GL_BUFFER_UPDATE_BARRIER_BIT);
 

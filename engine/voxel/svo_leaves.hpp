@@ -1,6 +1,7 @@
 #pragma once
 // svo_leaves pass (DESIGN §4 pass 3): fragment values → per-cell integer sums (atomicAdd,
 // order-independent) → normalized cell values: albedo, opacity, normal, area, emission.
+#include "render/gpu_scene.hpp"
 #include "voxel/octree.hpp"
 
 namespace vct {
@@ -12,7 +13,9 @@ struct LeafStatistics {
 class SvoLeaves {
 public:
     SvoLeaves();
-    LeafStatistics run(const FragmentList& fragments, GLuint fragmentNodeTexture, float maxEmission, Octree& octree);
+    // Material colours and emission come from gpuScene's material buffer, by the fragment's index.
+    LeafStatistics run(const FragmentList& fragments, GLuint fragmentNodeTexture, const GpuScene& gpuScene,
+                       Octree& octree);
 
 private:
     gl::Program accumulate_, normalize_;

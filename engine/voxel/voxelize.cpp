@@ -27,7 +27,7 @@ std::uint64_t estimateFragments(const Scene& scene, const VoxelGrid& grid) {
     return std::uint64_t(3.0 * area / voxelArea + 4.0 * double(scene.triangleCount())) + 1024;
 }
 
-void Voxelizer::allocate(FragmentList& list, std::uint32_t capacity, bool emissive) const {
+void Voxelizer::allocate(FragmentList& list, std::uint32_t capacity) const {
     GLint maxTexels = 0;
     glGetIntegerv(GL_MAX_TEXTURE_BUFFER_SIZE, &maxTexels);
     if (std::uint64_t(capacity) > std::uint64_t(maxTexels))
@@ -36,27 +36,16 @@ void Voxelizer::allocate(FragmentList& list, std::uint32_t capacity, bool emissi
     list.data = gl::createBuffer(GLsizeiptr(capacity) * 16, nullptr, 0, "voxel fragments");
     list.dataTexture = gl::createTexture(GL_TEXTURE_BUFFER, "voxel fragments");
     glTextureBuffer(list.dataTexture.id(), GL_RGBA32UI, list.data.id());
-    list.hasEmissive = emissive;
-    if (emissive) {
-        list.emissive = gl::createBuffer(GLsizeiptr(capacity) * 8, nullptr, 0, "voxel fragment emission");
-        list.emissiveTexture = gl::createTexture(GL_TEXTURE_BUFFER, "voxel fragment emission");
-        glTextureBuffer(list.emissiveTexture.id(), GL_RG32UI, list.emissive.id());
-    } else {
-        list.emissive.reset();
-        list.emissiveTexture.reset();
-    }
     list.capacity = capacity;
     gl::checkErrors(concat("allocating the voxel-fragment list (", capacity, " fragments)"));
 }
 
 void Voxelizer::run(const GpuScene& gpuScene, const Scene& scene, const VoxelGrid& grid, FragmentList& list) {
-    bool emissive = false;
-    for (const Material& m : scene.materials) emissive |= m.emissive != glm::vec3(0.0f);
     if (!list.counter)
         list.counter = gl::createBuffer(4, nullptr, GL_DYNAMIC_STORAGE_BIT, "voxel fragment counter");
-    if (list.capacity == 0 || list.hasEmissive != emissive) {
+    if (list.capacity == 0) {
         const std::uint64_t estimate = std::min<std::uint64_t>(estimateFragments(scene, grid), 1u << 26);
-        allocate(list, std::uint32_t(estimate), emissive);
+        allocate(list, std::uint32_t(estimate));
     }
     list.regrowths = 0;
     const int n = grid.resolution();
@@ -76,10 +65,8 @@ void Voxelizer::run(const GpuScene& gpuScene, const Scene& scene, const VoxelGri
         gl::setUniform(p, "uViewportSize", float(n));
         gl::setUniform(p, "uResolution", n);
         gl::setUniform(p, "uCapacity", list.capacity);
-        gl::setUniform(p, "uWriteEmissive", emissive ? 1 : 0);
         glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, list.counter.id());
         glBindImageTexture(0, list.dataTexture.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32UI);
-        if (emissive) glBindImageTexture(1, list.emissiveTexture.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RG32UI);
         gpuScene.draw(p);
         glBindFramebuffer(GL_FRAMEBUFFER, 0);
         glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT |
@@ -92,7 +79,7 @@ void Voxelizer::run(const GpuScene& gpuScene, const Scene& scene, const VoxelGri
         }
         logInfo(concat("voxel-fragment list: ", count, " fragments for a capacity of ", list.capacity,
                        "; growing it and voxelizing again"));
-        allocate(list, count, emissive);
+        allocate(list, count);
         ++list.regrowths;
     }
     gl::checkErrors("voxelizing the scene");

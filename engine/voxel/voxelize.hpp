@@ -14,7 +14,7 @@ public:
     void run(const GpuScene& gpuScene, const Scene& scene, const VoxelGrid& grid, FragmentList& list);
 
 private:
-    void allocate(FragmentList& list, std::uint32_t capacity, bool emissive) const;
+    void allocate(FragmentList& list, std::uint32_t capacity) const;
     gl::Program program_;
     gl::Framebuffer framebuffer_;  // no attachments: the pass writes only to the fragment list
 };

@@ -1,0 +1,62 @@
+#include "cli/render_options.hpp"
+
+#include <cmath>
+
+#include "core/error.hpp"
+
+namespace vct::cli {
+
+void addRenderSettingsOptions(CLI::App& command, RenderSettingsOptions& o) {
+    command.add_option("--aov", o.aov, "output buffer: final, direct, indirect, ao, albedo, normal, depth")
+        ->capture_default_str();
+    command.add_option("--exposure", o.exposureEV, "exposure in stops (EV); default: the scene's");
+    command.add_option("--tonemap", o.toneCurve, "tone curve: aces, reinhard, clamp")->capture_default_str();
+    command.add_option("--light-view-res", o.lightViewResolution, "light-view (shadow) map texels per side")
+        ->capture_default_str();
+    command.add_option("--pcf-radius", o.pcfRadius, "shadow filter radius in texels (0 = one tap)")
+        ->capture_default_str();
+    command.add_option("--view", o.view,
+                       "lit (the lit image), voxels (the octree's albedo) or radiance (the octree's radiance)")
+        ->capture_default_str();
+    command.add_option("--gi", o.gi, "indirect light by cone tracing: on or off")->capture_default_str();
+    command.add_flag("--no-photons", o.noPhotons, "inject no light (cones then see only emission; AO stays)");
+    command.add_option("--cones", o.cones.cones, "diffuse cone set: 1, 5, 6, 9 or 16 cones")->capture_default_str();
+    command.add_option("--cone-aperture", o.cones.apertureScale, "factor on the derived cone apertures (tan)")
+        ->capture_default_str();
+    command.add_option("--cone-step", o.cones.step, "cone step length as a fraction of its diameter")
+        ->capture_default_str();
+    command.add_option("--cone-offset", o.cones.offset, "cone start offset along the normal, in voxels")
+        ->capture_default_str();
+    command.add_option("--cone-lift", o.cones.lift,
+                       "extra offset along the normal per unit of cone diameter (against self-illumination)")
+        ->capture_default_str();
+    command.add_option("--gi-scale", o.giScale, "artistic factor on indirect light (1 = physically consistent)")
+        ->capture_default_str();
+    command.add_option("--voxel-levels", o.voxelLevels, "octree resolution 2^L voxels per axis, L in 5..10")
+        ->capture_default_str();
+    command.add_option("--voxel-level", o.voxelViewLevel,
+                       "octree level shown by the voxel views (1..L; default L, the voxels themselves)");
+    command.add_flag("--no-bricks", o.noBricks, "raw node values instead of filtered bricks (cones and voxel views)");
+}
+
+RenderSettings renderSettingsFromOptions(const RenderSettingsOptions& o, const Scene& scene) {
+    RenderSettings settings;
+    settings.lightViewResolution = o.lightViewResolution;
+    settings.pcfRadius = o.pcfRadius;
+    settings.display.aov = parseAov(o.aov);
+    settings.display.toneCurve = parseToneCurve(o.toneCurve);
+    settings.display.giScale = o.giScale;
+    settings.display.exposureEV = o.exposureEV.value_or(scene.exposureEV);
+    if (!std::isfinite(settings.display.exposureEV)) fail("--exposure must be a finite number of stops");
+    settings.view = parseViewMode(o.view);
+    settings.voxelLevels = o.voxelLevels;
+    settings.voxelViewLevel = o.voxelViewLevel;
+    settings.bricks = !o.noBricks;
+    if (o.gi != "on" && o.gi != "off") fail("--gi must be on or off, not '", o.gi, "'");
+    settings.gi = o.gi == "on";
+    settings.photons = !o.noPhotons;
+    settings.cones = o.cones;
+    return settings;
+}
+
+}  // namespace vct::cli

@@ -1,0 +1,36 @@
+#pragma once
+// The command-line options that map onto RenderSettings (display, lights' shadow maps, GI, cones,
+// octree), shared by the subcommands that render through vct::Renderer so that the same option
+// means the same thing everywhere. Image size and backend are each command's own business.
+#include <optional>
+#include <string>
+
+#include <CLI/CLI.hpp>
+
+#include "pipeline/renderer.hpp"
+#include "scene/scene.hpp"
+
+namespace vct::cli {
+
+struct RenderSettingsOptions {
+    std::string aov = "final";
+    std::string toneCurve = "aces";
+    std::optional<double> exposureEV;  // default: the scene's
+    int lightViewResolution = 2048;
+    int pcfRadius = 1;
+    std::string view = "lit";
+    int voxelLevels = 8;
+    int voxelViewLevel = 0;
+    bool noBricks = false;
+    std::string gi = "on";
+    bool noPhotons = false;
+    ConeSettings cones;
+    float giScale = 1.0f;
+};
+
+void addRenderSettingsOptions(CLI::App& command, RenderSettingsOptions& options);
+
+// Parses the names (clear errors for bad values); width and height are left at their defaults.
+RenderSettings renderSettingsFromOptions(const RenderSettingsOptions& options, const Scene& scene);
+
+}  // namespace vct::cli

@@ -1,0 +1,279 @@
+#include "viewer/ui_panel.hpp"
+
+#include <imgui.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <map>
+
+#include "viewer/key_bindings.hpp"
+#include "viewer/light_control.hpp"
+
+namespace vct::viewer {
+namespace {
+
+constexpr float kPanelWidth = 380.0f;
+
+float dequeValue(void* data, int index) { return (*static_cast<const std::deque<float>*>(data))[std::size_t(index)]; }
+
+void plot(const char* label, const std::deque<float>& history, const char* overlay, float height) {
+    if (history.empty()) return;
+    const float top = std::max(1e-3f, *std::max_element(history.begin(), history.end()) * 1.1f);
+    ImGui::PlotLines(label, dequeValue, const_cast<std::deque<float>*>(&history), int(history.size()), 0, overlay, 0.0f,
+                     top, ImVec2(-1.0f, height));
+}
+
+std::string megabytes(std::size_t bytes) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.1f MiB", double(bytes) / (1024.0 * 1024.0));
+    return text;
+}
+
+void frameSection(const PanelInputs& in) {
+    const auto& stats = in.stats;
+    const double ms = stats.meanFrameMs();
+    ImGui::Text("frame %.1f ms (%.1f fps)   window %dx%d, render %dx%d", ms, ms > 0 ? 1000.0 / ms : 0.0,
+                in.windowWidth, in.windowHeight, in.renderer.settings().width, in.renderer.settings().height);
+    ImGui::TextDisabled("%s", in.context.renderer.c_str());
+    char overlay[64];
+    const float gpu = stats.gpuHistory().empty() ? 0.0f : stats.gpuHistory().back();
+    std::snprintf(overlay, sizeof overlay, "GPU %.2f ms (last %zu frames)", gpu, stats.gpuHistory().size());
+    plot("##gpu", stats.gpuHistory(), overlay, 48.0f);
+}
+
+void passesSection(const PanelInputs& in) {
+    if (!ImGui::CollapsingHeader("Passes", ImGuiTreeNodeFlags_DefaultOpen)) return;
+    // Timings arrive a frame or more late; ran/skipped is this frame's.
+    std::map<std::string, std::pair<double, double>> timing;  // name -> gpu, cpu
+    if (const auto& latest = in.stats.latest())
+        for (const auto& pass : latest->passes) {
+            auto& t = timing[pass.name];
+            t.first += pass.gpuMs;
+            t.second += pass.cpuMs;
+        }
+    const ImGuiTableFlags flags = ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV | ImGuiTableFlags_SizingFixedFit;
+    if (ImGui::BeginTable("passes", 4, flags)) {
+        ImGui::TableSetupColumn("pass");
+        ImGui::TableSetupColumn("GPU ms");
+        ImGui::TableSetupColumn("CPU ms");
+        ImGui::TableSetupColumn("this frame", ImGuiTableColumnFlags_WidthStretch);
+        ImGui::TableHeadersRow();
+        double gpuTotal = 0, cpuTotal = 0;
+        for (const auto& run : in.renderer.lastFrame()) {
+            ImGui::TableNextRow();
+            ImGui::TableNextColumn();
+            ImGui::TextUnformatted(run.name.c_str());
+            const auto t = timing.find(run.name);
+            ImGui::TableNextColumn();
+            if (t != timing.end()) ImGui::Text("%7.2f", t->second.first);
+            ImGui::TableNextColumn();
+            if (t != timing.end()) ImGui::Text("%7.2f", t->second.second);
+            if (t != timing.end()) {
+                gpuTotal += t->second.first;
+                cpuTotal += t->second.second;
+            }
+            ImGui::TableNextColumn();
+            if (run.ran)
+                ImGui::TextColored(ImVec4(0.5f, 0.9f, 0.5f, 1.0f), "ran%s%s", run.reason.empty() ? "" : ": ",
+                                   run.reason.c_str());
+            else
+                ImGui::TextDisabled("skipped%s%s", run.reason.empty() ? "" : ": ", run.reason.c_str());
+            if (!run.reason.empty() && ImGui::IsItemHovered()) ImGui::SetTooltip("%s", run.reason.c_str());
+        }
+        ImGui::TableNextRow();
+        ImGui::TableNextColumn();
+        ImGui::TextUnformatted("total");
+        ImGui::TableNextColumn();
+        ImGui::Text("%7.2f", gpuTotal);
+        ImGui::TableNextColumn();
+        ImGui::Text("%7.2f", cpuTotal);
+        ImGui::EndTable();
+    }
+    if (ImGui::TreeNode("GPU ms per pass, last frames")) {
+        for (const auto& name : in.stats.passNames()) {
+            const auto& history = in.stats.passHistory(name);
+            char overlay[96];
+            std::snprintf(overlay, sizeof overlay, "%s %.2f ms", name.c_str(), history.empty() ? 0.0f : history.back());
+            plot(("##" + name).c_str(), history, overlay, 28.0f);
+        }
+        ImGui::TreePop();
+    }
+}
+
+void memorySection(const PanelInputs& in) {
+    if (!ImGui::CollapsingHeader("GPU memory")) return;
+    std::size_t total = 0;
+    if (ImGui::BeginTable("memory", 2, ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingFixedFit)) {
+        for (const auto& pool : in.renderer.memory()) {
+            total += pool.bytes;
+            ImGui::TableNextRow();
+            ImGui::TableNextColumn();
+            ImGui::TextUnformatted(pool.name.c_str());
+            ImGui::TableNextColumn();
+            ImGui::TextUnformatted(megabytes(pool.bytes).c_str());
+        }
+        ImGui::TableNextRow();
+        ImGui::TableNextColumn();
+        ImGui::TextUnformatted("total");
+        ImGui::TableNextColumn();
+        ImGui::TextUnformatted(megabytes(total).c_str());
+        ImGui::EndTable();
+    }
+}
+
+void cameraSection(ViewerState& state, const PanelInputs& in) {
+    if (!ImGui::CollapsingHeader("Camera")) return;
+    const Camera& camera = in.camera.camera();
+    if (ImGui::BeginCombo("preset", "choose...")) {
+        for (std::size_t i = 0; i < in.scene.cameras.size(); ++i)
+            if (ImGui::Selectable(in.scene.cameras[i].name.c_str())) state.cameraPreset = int(i);
+        ImGui::EndCombo();
+    }
+    ImGui::Text("eye (%.3g, %.3g, %.3g)  fov %.1f°", camera.eye.x, camera.eye.y, camera.eye.z, camera.fovYDeg);
+    ImGui::Text("move speed %.3g units/s (mouse wheel)", in.camera.speed());
+}
+
+bool lightsSection(ViewerState& state) {
+    if (!ImGui::CollapsingHeader("Lights")) return false;
+    bool anyChanged = false;
+    for (std::size_t i = 0; i < state.lights.size(); ++i) {
+        Light& light = state.lights[i];
+        ImGui::PushID(int(i));
+        const bool sun = light.type == LightType::Directional;
+        ImGui::Text("%s %zu%s", sun ? "sun" : "spot", i, int(i) == steeredLight(state.lights) ? " (arrow keys)" : "");
+        LightAngles angles = anglesOfDirection(light.direction);
+        float azimuth = float(angles.azimuthDeg), elevation = float(angles.elevationDeg);
+        bool changed = ImGui::SliderFloat("azimuth", &azimuth, -180.0f, 180.0f, "%.1f°");
+        changed |= ImGui::SliderFloat("elevation", &elevation, -89.0f, 89.0f, "%.1f°");
+        if (changed) {
+            light.direction = directionOfAngles({azimuth, elevation});
+        }
+        float power = float(sun ? light.irradiance : light.intensity);
+        if (ImGui::DragFloat(sun ? "irradiance W/m²" : "intensity W/sr", &power, std::max(power, 1e-3f) * 0.01f, 1e-4f,
+                             1e7f, "%.4g", ImGuiSliderFlags_Logarithmic | ImGuiSliderFlags_AlwaysClamp)) {
+            (sun ? light.irradiance : light.intensity) = double(power);
+            changed = true;
+        }
+        anyChanged |= changed;
+        ImGui::PopID();
+    }
+    return anyChanged;
+}
+
+bool comboOf(const char* label, int& index, const char* const items[], int count) {
+    return ImGui::Combo(label, &index, items, count);
+}
+
+// Each widget reports an edit; `changed` collects them so the renderer is told only then.
+void settingsSection(ViewerState& state, bool& changed) {
+    if (!ImGui::CollapsingHeader("Settings")) return;
+    RenderSettings& s = state.settings;
+    changed |= ImGui::Checkbox("GI (G)", &s.gi);
+    ImGui::SameLine();
+    changed |= ImGui::Checkbox("photons (P)", &s.photons);
+    ImGui::SameLine();
+    changed |= ImGui::Checkbox("bricks (B)", &s.bricks);
+
+    static const char* const views[] = {"lit", "voxels (V)", "radiance (Shift+V)"};
+    int view = int(s.view);
+    if (comboOf("view", view, views, 3)) {
+        s.view = ViewMode(view);
+        changed = true;
+    }
+    int shownLevel = s.voxelViewLevel ? s.voxelViewLevel : s.voxelLevels;
+    if (ImGui::SliderInt("voxel view level ([ ])", &shownLevel, 1, s.voxelLevels, "%d", ImGuiSliderFlags_AlwaysClamp)) {
+        s.voxelViewLevel = shownLevel == s.voxelLevels ? 0 : shownLevel;
+        changed = true;
+    }
+
+    static const Aov aovs[] = {Aov::Final, Aov::Direct, Aov::Indirect, Aov::Ao, Aov::Albedo, Aov::Normal, Aov::Depth};
+    static const char* const aovNames[] = {"final (1)", "direct (2)", "indirect (3)", "ao (4)",
+                                           "albedo (5)", "normal (6)", "depth"};
+    int aov = int(std::find(std::begin(aovs), std::end(aovs), s.display.aov) - std::begin(aovs));
+    if (comboOf("output", aov, aovNames, 7)) {
+        s.display.aov = aovs[aov];
+        changed = true;
+    }
+    float exposure = float(s.display.exposureEV);
+    if (ImGui::SliderFloat("exposure EV", &exposure, -10.0f, 10.0f, "%.2f")) {
+        s.display.exposureEV = exposure;
+        changed = true;
+    }
+    static const char* const curves[] = {"aces", "reinhard", "clamp"};
+    int curve = int(s.display.toneCurve);
+    if (comboOf("tone curve", curve, curves, 3)) {
+        s.display.toneCurve = ToneCurve(curve);
+        changed = true;
+    }
+    changed |= ImGui::SliderFloat("GI scale", &s.display.giScale, 0.0f, 4.0f, "%.2f", ImGuiSliderFlags_AlwaysClamp);
+
+    ImGui::Separator();
+    static const int coneCounts[] = {1, 5, 6, 9, 16};
+    static const char* const coneNames[] = {"1", "5", "6", "9", "16"};
+    int cones = int(std::find(std::begin(coneCounts), std::end(coneCounts), s.cones.cones) - std::begin(coneCounts));
+    if (comboOf("cones", cones, coneNames, 5)) {
+        s.cones.cones = coneCounts[cones];
+        changed = true;
+    }
+    changed |= ImGui::SliderFloat("aperture x", &s.cones.apertureScale, 0.1f, 4.0f, "%.2f", ImGuiSliderFlags_AlwaysClamp);
+    changed |= ImGui::SliderFloat("step (diameters)", &s.cones.step, 0.05f, 4.0f, "%.2f", ImGuiSliderFlags_AlwaysClamp);
+    changed |= ImGui::SliderFloat("offset (voxels)", &s.cones.offset, 0.0f, 16.0f, "%.2f", ImGuiSliderFlags_AlwaysClamp);
+    changed |= ImGui::SliderFloat("lift", &s.cones.lift, 0.0f, 4.0f, "%.2f", ImGuiSliderFlags_AlwaysClamp);
+    changed |= ImGui::SliderInt("PCF radius", &s.pcfRadius, 0, 8, "%d", ImGuiSliderFlags_AlwaysClamp);
+    static const int resolutions[] = {256, 512, 1024, 2048, 4096};
+    static const char* const resolutionNames[] = {"256", "512", "1024", "2048", "4096"};
+    int resolution = int(std::find(std::begin(resolutions), std::end(resolutions), s.lightViewResolution) -
+                         std::begin(resolutions));
+    if (resolution == 5) resolution = -1;  // a value from the command line that is not in the list
+    if (comboOf("light-view map", resolution, resolutionNames, 5)) {
+        s.lightViewResolution = resolutions[resolution];
+        changed = true;
+    }
+}
+
+}  // namespace
+
+PanelEdits UiPanel::draw(ViewerState& state, const PanelInputs& in) {
+    PanelEdits edits;
+    ImGui::SetNextWindowPos(ImVec2(8.0f, 8.0f), ImGuiCond_FirstUseEver);
+    ImGui::SetNextWindowSize(ImVec2(kPanelWidth, std::min(float(in.windowHeight) - 16.0f, 560.0f)),
+                             ImGuiCond_FirstUseEver);
+    ImGui::SetNextWindowBgAlpha(0.82f);
+    if (!ImGui::Begin("vct (F1 hides)")) {
+        ImGui::End();
+        return edits;
+    }
+    ImGui::PushTextWrapPos(0.0f);
+    ImGui::TextDisabled("%s", keyHelpLine().c_str());
+    ImGui::PopTextWrapPos();
+    if (!state.status.empty()) ImGui::TextColored(ImVec4(1.0f, 0.85f, 0.4f, 1.0f), "%s", state.status.c_str());
+    frameSection(in);
+    passesSection(in);
+    memorySection(in);
+    cameraSection(state, in);
+    edits.lights = lightsSection(state);
+    settingsSection(state, edits.settings);
+    expensiveSection(state, edits.settings);
+    ImGui::End();
+    return edits;
+}
+
+void UiPanel::expensiveSection(ViewerState& state, bool& changed) {
+    if (!ImGui::CollapsingHeader("Resolution (applied on release)")) return;
+    // Rebuilding the octree or every render target per slider step would stall the viewer, so
+    // these apply when the slider is let go.
+    if (!ImGui::IsAnyItemActive()) {
+        levels_ = state.settings.voxelLevels;
+        scale_ = state.renderScale;
+    }
+    ImGui::SliderInt("voxel levels (2^L)", &levels_, 5, 10, "%d", ImGuiSliderFlags_AlwaysClamp);
+    if (ImGui::IsItemDeactivatedAfterEdit() && levels_ != state.settings.voxelLevels) {
+        state.settings.voxelLevels = levels_;
+        if (state.settings.voxelViewLevel >= levels_) state.settings.voxelViewLevel = 0;
+        changed = true;
+    }
+    ImGui::SliderFloat("render scale", &scale_, 0.25f, 1.0f, "%.2f", ImGuiSliderFlags_AlwaysClamp);
+    if (ImGui::IsItemDeactivatedAfterEdit()) state.renderScale = scale_;  // the app resizes
+}
+
+}  // namespace vct::viewer
