@@ -19,6 +19,15 @@ layout(binding = 3) uniform sampler3D uBrickAlbedo;
 layout(std430, binding = 12) buffer RawRadiance { vec4 rawRadiance[]; };
 layout(std430, binding = 20) buffer RawAlbedo { vec4 rawAlbedo[]; };
 layout(rgba32f, binding = 0) uniform writeonly image2D uIndirect;
+// What the pass did and saved, as 64-bit counts (low, high): samples taken, samples that empty-
+// space skipping saved (the steps the skipped nodes would have cost), pixels that saw the sky.
+layout(std430, binding = 22) buffer Counters { uint counters[6]; };
+void count64(uint index, uint value) {
+    if (value == 0u) return;
+    uint old = atomicAdd(counters[index], value);
+    if (old + value < old) atomicAdd(counters[index + 1u], 1u);
+}
+uint samplesTaken = 0u, samplesSaved = 0u;
 
 #define MAX_CONES 16
 uniform int uConeCount;
@@ -92,9 +101,11 @@ vec4 traceCone(vec3 origin, vec3 normal, vec3 direction, float tanHalfAngle) {
         vec4 value;
         float tSkip;
         if (!sampleRadiance(p, log2(diameter), origin, invDirection, value, tSkip)) {
+            samplesSaved += uint(max(tSkip - t, 0.0) / (uConeStep * diameter));
             t = max(tSkip + 1e-3, t + 1e-3);
             continue;
         }
+        ++samplesTaken;
         // value = (L·τ, τ): τ is the optical depth per voxel length, so the step of
         // uConeStep × diameter voxels has opacity 1 − exp(−τ·step); its radiance is L = rgb/τ.
         float step = uConeStep * diameter;
@@ -113,6 +124,7 @@ void main() {
     vec4 position = texelFetch(uPosition, pixel, 0);
     if (position.w <= 0.0) {  // sky: no GI work
         imageStore(uIndirect, pixel, vec4(0.0, 0.0, 0.0, 1.0));
+        count64(4u, 1u);
         return;
     }
     vec3 normal = normalize(texelFetch(uNormal, pixel, 0).xyz);
@@ -133,4 +145,6 @@ void main() {
         occlusion += uConeWeight[c] * cone.a;
     }
     imageStore(uIndirect, pixel, vec4(irradiance, 1.0 - occlusion / 3.14159265358979));
+    count64(0u, samplesTaken);
+    count64(2u, samplesSaved);
 }

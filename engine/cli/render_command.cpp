@@ -34,6 +34,7 @@ struct RenderOptions {
     bool noBricks = false;
     bool fullFrames = false;
     std::string lightPath;
+    std::string cameraPath;
     std::string gi = "on";
     bool noPhotons = false;
     ConeSettings cones;
@@ -76,6 +77,8 @@ void run(const RenderOptions& o) {
     settings.fullFrames = o.fullFrames;
     if (!o.lightPath.empty() && o.lightPath != "orbit")
         fail("unknown --light-path '", o.lightPath, "'; the only path is orbit");
+    if (!o.cameraPath.empty() && o.cameraPath != "orbit")
+        fail("unknown --camera-path '", o.cameraPath, "'; the only path is orbit");
     if (o.gi != "on" && o.gi != "off") fail("--gi must be on or off, not '", o.gi, "'");
     settings.gi = o.gi == "on";
     settings.photons = !o.noPhotons;
@@ -94,7 +97,15 @@ void run(const RenderOptions& o) {
     const std::vector<Light> startLights = renderer.lights();
     for (int frame = 0; frame < o.frames; ++frame) {
         if (!o.lightPath.empty() && frame > 0) renderer.setLights(orbit(startLights, scene, double(frame) / o.frames));
-        renderer.renderFrame(camera);
+        Camera view = camera;
+        if (!o.cameraPath.empty() && frame > 0) {
+            // A small turn of the eye around the target's vertical axis: a typical interactive move.
+            const double angle = 0.05 * frame;
+            const glm::dvec3 d = camera.eye - camera.target;
+            view.eye = camera.target + glm::dvec3(std::cos(angle) * d.x + std::sin(angle) * d.z, d.y,
+                                                  -std::sin(angle) * d.x + std::cos(angle) * d.z);
+        }
+        renderer.renderFrame(view);
     }
 
     const ImageF hdr = renderer.readHdr();
@@ -164,6 +175,9 @@ Run addRenderCommand(CLI::App& app) {
     command->add_flag("--full-frames", o.fullFrames,
                       "run every pass every frame, as if the geometry changed (benchmarks: with --frames 2 a "
                       "warm full frame is timed); otherwise a frame re-runs only what changed");
+    command->add_option("--camera-path", o.cameraPath,
+                        "orbit: the eye turns around the target, 0.05 rad per frame (only camera-dependent "
+                        "passes re-run)");
     command->add_option("--light-path", o.lightPath,
                         "orbit: the lights turn once around the vertical axis over --frames frames (the octree is "
                         "reused; only light-dependent passes re-run)");

@@ -245,6 +245,7 @@ void Renderer::runPass(const std::string& pass, const Camera& camera, const View
         ConeSettings cones = settings_.cones;
         cones.bricks = settings_.bricks;
         coneTrace_->render(*gbuffer_, svo_->octree(), *radiance_, cones);
+        statistics_.cones = coneTrace_->statistics();
     } else if (pass == "voxel_view") {
         if (!voxelView_) voxelView_ = std::make_unique<VoxelView>(settings_.width, settings_.height);
         const int level = settings_.voxelViewLevel ? settings_.voxelViewLevel : settings_.voxelLevels;

@@ -61,6 +61,7 @@ struct FrameStatistics {
     std::vector<std::uint32_t> touchedNodesPerLevel;           // radiance filtered through these
     std::vector<std::uint32_t> nodesPerLevel;
     std::uint32_t photonsMissed = 0;
+    ConeStatistics cones;
 };
 
 class Renderer {

@@ -59,7 +59,10 @@ void writeTimingsJson(const std::filesystem::path& path, const TimingsReport& re
                           {"light_views", s.lightViewsTotal},
                           {"touched_nodes_per_level", s.touchedNodesPerLevel},
                           {"nodes_per_level", s.nodesPerLevel},
-                          {"photons_missed", s.photonsMissed}};
+                          {"photons_missed", s.photonsMissed},
+                          {"cone_samples", s.cones.samples},
+                          {"cone_samples_saved_by_empty_space_skipping", s.cones.samplesSaved},
+                          {"sky_pixels_without_gi_work", s.cones.skyPixels}};
     if (report.voxels) {
         const VoxelMemoryReport& v = *report.voxels;
         json["voxels"] = {{"levels", int(v.nodesPerLevel.size()) - 1},

@@ -9,7 +9,9 @@
 //     "memory": [ { "name": str, "bytes": int } ], "memory_total_bytes": int,
 //     "graph": [ { "name": str, "ran": bool, "reason": str } ],   every pass, ran or skipped, and why
 //     "statistics": { "light_views_rendered": int, "light_views": int,
-//                     "touched_nodes_per_level": [int], "nodes_per_level": [int], "photons_missed": int },
+//                     "touched_nodes_per_level": [int], "nodes_per_level": [int], "photons_missed": int,
+//                     "cone_samples": int, "cone_samples_saved_by_empty_space_skipping": int,
+//                     "sky_pixels_without_gi_work": int },   (of the last frame that ran each pass)
 //     "voxels": {              only when the frame built the octree
 //        "levels": int, "fragments": int, "fragment_list_regrowths": int, "max_fragments_in_voxel": int,
 //        "nodes_per_level": [int],  levels 0..L, the last = occupied voxels

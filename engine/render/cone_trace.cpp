@@ -12,7 +12,15 @@ ConeTrace::ConeTrace(int width, int height)
     : width_(width),
       height_(height),
       indirect_(gl::createTexture2D(GL_RGBA32F, width, height, 1, "indirect irradiance")),
-      program_(gl::buildProgram({{GL_COMPUTE_SHADER, "cone_trace.comp"}})) {}
+      program_(gl::buildProgram({{GL_COMPUTE_SHADER, "cone_trace.comp"}})),
+      counters_(gl::createBuffer(24, nullptr, GL_DYNAMIC_STORAGE_BIT, "cone counters")) {}
+
+ConeStatistics ConeTrace::statistics() const {
+    std::uint32_t c[6] = {};
+    glGetNamedBufferSubData(counters_.id(), 0, sizeof c, c);
+    auto join = [&](int i) { return std::uint64_t(c[i]) | (std::uint64_t(c[i + 1]) << 32); };
+    return {join(0), join(2), join(4)};
+}
 
 void ConeTrace::render(const GBuffer& gbuffer, const Octree& octree, const RadianceVolume& radiance,
                        const ConeSettings& settings) {
@@ -51,6 +59,9 @@ void ConeTrace::render(const GBuffer& gbuffer, const Octree& octree, const Radia
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 12, radiance.rawRadiance.id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 20, octree.rawValue.id());
     glBindImageTexture(0, indirect_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+    const std::uint32_t zero = 0;
+    glClearNamedBufferData(counters_.id(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 22, counters_.id());
     glDispatchCompute(GLuint((width_ + 7) / 8), GLuint((height_ + 7) / 8), 1);
     glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
     gl::checkErrors("tracing cones");

@@ -18,17 +18,25 @@ struct ConeSettings {
     bool bricks = true;         // false: raw node values, no interpolation (`--no-bricks`)
 };
 
+struct ConeStatistics {
+    std::uint64_t samples = 0;       // brick samples taken
+    std::uint64_t samplesSaved = 0;  // samples empty-space skipping made unnecessary
+    std::uint64_t skyPixels = 0;     // pixels with no GI work
+};
+
 class ConeTrace {
 public:
     ConeTrace(int width, int height);
     void render(const GBuffer& gbuffer, const Octree& octree, const RadianceVolume& radiance, const ConeSettings& settings);
     GLuint indirect() const { return indirect_.id(); }  // RGBA32F: irradiance, visibility
+    ConeStatistics statistics() const;  // of the last render (reads back 24 bytes)
     std::size_t bytes() const { return std::size_t(width_) * height_ * 16; }
 
 private:
     int width_, height_;
     gl::Texture indirect_;
     gl::Program program_;
+    gl::Buffer counters_;
 };
 
 }  // namespace vct
