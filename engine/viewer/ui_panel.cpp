@@ -236,7 +236,8 @@ void settingsSection(ViewerState& state, bool& changed) {
 PanelEdits UiPanel::draw(ViewerState& state, const PanelInputs& in) {
     PanelEdits edits;
     ImGui::SetNextWindowPos(ImVec2(8.0f, 8.0f), ImGuiCond_FirstUseEver);
-    ImGui::SetNextWindowSize(ImVec2(kPanelWidth, std::min(float(in.windowHeight) - 16.0f, 560.0f)),
+    ImGui::SetNextWindowSize(ImVec2(std::max(std::min(kPanelWidth, float(in.windowWidth) - 16.0f), 120.0f),
+                                    std::max(std::min(float(in.windowHeight) - 16.0f, 560.0f), 80.0f)),
                              ImGuiCond_FirstUseEver);
     ImGui::SetNextWindowBgAlpha(0.82f);
     if (!ImGui::Begin("vct (F1 hides)")) {
