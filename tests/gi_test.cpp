@@ -77,6 +77,20 @@ std::filesystem::path writeSolidShell(const std::filesystem::path& dir, const st
     return dir / "shell.obj";
 }
 
+// Renders one frame of `scene` (with `lights`) in-process at 64³ voxels and returns the renderer,
+// whose octree and radiance volume the caller reads back.
+std::unique_ptr<Renderer> renderRadiance(Scene& scene, const std::vector<Light>& lights) {
+    scene.lights = lights;
+    RenderSettings settings;
+    settings.width = 16;
+    settings.height = 16;
+    settings.voxelLevels = 6;
+    settings.lightViewResolution = 2048;
+    auto renderer = std::make_unique<Renderer>(scene, settings);
+    renderer->renderFrame(scene.cameras[0]);
+    return renderer;
+}
+
 }  // namespace
 
 TEST(Gi, OneVoxelWallsStayMostlyOpaqueAtCoarseLevels) {
@@ -152,17 +166,10 @@ TEST(Gi, InjectionStoresLambertRadianceAndHalfForHalfShadowedVoxels) {
         Light sun;
         sun.direction = glm::dvec3(std::sin(theta), -std::cos(theta), 0.0);
         sun.irradiance = E;
-        scene.lights = {sun};
         auto context = gl::createContext(gl::Backend::OSMesa);
-        RenderSettings settings;
-        settings.width = 16;
-        settings.height = 16;
-        settings.voxelLevels = 6;
-        settings.lightViewResolution = 2048;
-        Renderer renderer(scene, settings);
-        renderer.renderFrame(scene.cameras[0]);
-        const Octree& octree = renderer.octree()->octree();
-        const auto radiance = test::readBuffer<glm::vec4>(renderer.radiance()->cellRadiance, octree.cellCount());
+        const auto renderer = renderRadiance(scene, {sun});
+        const Octree& octree = renderer->octree()->octree();
+        const auto radiance = test::readBuffer<glm::vec4>(renderer->radiance()->cellRadiance, octree.cellCount());
         const auto coords = test::readBuffer<std::uint32_t>(octree.coord, octree.totalCount);
         const double expected = 0.5 / glm::pi<double>() * E * std::cos(theta);
         double sum = 0, worst = 0;
@@ -198,16 +205,10 @@ TEST(Gi, HalfShadowedVoxelsStoreHalf) {
     Light sun;
     sun.direction = {0.0, -1.0, 0.0};
     sun.irradiance = 4.0;
-    scene.lights = {sun};
     auto context = gl::createContext(gl::Backend::OSMesa);
-    RenderSettings settings;
-    settings.width = 16;
-    settings.height = 16;
-    settings.voxelLevels = 6;
-    Renderer renderer(scene, settings);
-    renderer.renderFrame(scene.cameras[0]);
-    const Octree& octree = renderer.octree()->octree();
-    const auto radiance = test::readBuffer<glm::vec4>(renderer.radiance()->cellRadiance, octree.cellCount());
+    const auto renderer = renderRadiance(scene, {sun});
+    const Octree& octree = renderer->octree()->octree();
+    const auto radiance = test::readBuffer<glm::vec4>(renderer->radiance()->cellRadiance, octree.cellCount());
     const auto coords = test::readBuffer<std::uint32_t>(octree.coord, octree.totalCount);
     const double lit = 0.5 / glm::pi<double>() * 4.0;
     const glm::dvec3 origin = octree.grid.toVoxel(glm::dvec3(0.0) - scene.origin);  // world (0,0,0) in voxels

@@ -32,13 +32,6 @@ const char* aovName(Aov aov) {
     return "?";
 }
 
-ToneCurve parseToneCurve(const std::string& name) {
-    if (name == "aces") return ToneCurve::Aces;
-    if (name == "reinhard") return ToneCurve::Reinhard;
-    if (name == "clamp") return ToneCurve::Clamp;
-    fail("unknown --tonemap '", name, "'; use aces, reinhard or clamp");
-}
-
 Composite::Composite(int width, int height)
     : width_(width),
       height_(height),

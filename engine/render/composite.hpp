@@ -4,16 +4,18 @@
 #include <string>
 
 #include "core/image.hpp"
+#include "core/tonemap.hpp"
 #include "gl/objects.hpp"
 #include "render/gbuffer.hpp"
 
 namespace vct {
 
 enum class Aov { Final, Direct, Albedo, Normal, Depth, Indirect, Ao };
-enum class ToneCurve { Aces, Reinhard, Clamp };
+// The tone curves are core/tonemap.hpp's (its order matches shaders/tonemap.glsl's constants).
+using ToneCurve = TonemapCurve;
 
 Aov parseAov(const std::string& name);            // throws listing the valid names
-ToneCurve parseToneCurve(const std::string& name);
+inline ToneCurve parseToneCurve(const std::string& name) { return parseTonemapCurve(name); }
 const char* aovName(Aov aov);
 
 struct DisplaySettings {

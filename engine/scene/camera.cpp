@@ -3,30 +3,21 @@
 #include <cmath>
 
 #include "core/error.hpp"
+#include "core/vector_text.hpp"
 
 namespace vct {
-namespace {
-
-bool isFinite(const glm::dvec3& v) {
-    return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
-}
-
-std::string str(const glm::dvec3& v) { return concat("(", v.x, ", ", v.y, ", ", v.z, ")"); }
-
-}  // namespace
-
 void validateCamera(const Camera& camera) {
     const std::string what = concat("camera '", camera.name, "'");
-    if (!isFinite(camera.eye)) fail(what, ": eye ", str(camera.eye), " is not finite");
-    if (!isFinite(camera.target)) fail(what, ": target ", str(camera.target), " is not finite");
-    if (!isFinite(camera.up)) fail(what, ": up vector ", str(camera.up), " is not finite");
+    if (!isFinite(camera.eye)) fail(what, ": eye ", toText(camera.eye), " is not finite");
+    if (!isFinite(camera.target)) fail(what, ": target ", toText(camera.target), " is not finite");
+    if (!isFinite(camera.up)) fail(what, ": up vector ", toText(camera.up), " is not finite");
     if (!std::isfinite(camera.fovYDeg) || camera.fovYDeg <= 0.0 || camera.fovYDeg >= 180.0)
         fail(what, ": vertical field of view ", camera.fovYDeg,
              "° must be between 0° and 180° (exclusive); 40°-60° is typical");
     const glm::dvec3 view = camera.target - camera.eye;
     const double viewLength = glm::length(view);
     if (viewLength == 0.0 || !std::isfinite(viewLength))
-        fail(what, ": eye and target are the same point ", str(camera.eye),
+        fail(what, ": eye and target are the same point ", toText(camera.eye),
              "; the target must be a point the camera looks at, away from the eye");
     const double upLength = glm::length(camera.up);
     if (upLength == 0.0 || !std::isfinite(upLength))
@@ -34,8 +25,8 @@ void validateCamera(const Camera& camera) {
     // Parallel when the sine of the angle between them is (numerically) zero.
     const double sine = glm::length(glm::cross(view / viewLength, camera.up / upLength));
     if (sine < 1e-6)
-        fail(what, ": up vector ", str(camera.up), " is parallel to the view direction ",
-             str(view / viewLength), "; choose an up vector not along the line of sight");
+        fail(what, ": up vector ", toText(camera.up), " is parallel to the view direction ",
+             toText(view / viewLength), "; choose an up vector not along the line of sight");
 }
 
 }  // namespace vct

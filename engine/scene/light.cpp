@@ -5,30 +5,21 @@
 #include <sstream>
 
 #include "core/error.hpp"
+#include "core/vector_text.hpp"
 
 namespace vct {
-namespace {
-
-bool isFinite(const glm::dvec3& v) {
-    return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
-}
-
-std::string str(const glm::dvec3& v) { return concat("(", v.x, ", ", v.y, ", ", v.z, ")"); }
-
-}  // namespace
-
 void validateLight(const Light& light, const std::string& what) {
     const bool spot = light.type == LightType::Spot;
     const char* kind = spot ? "spot light" : "directional light";
     if (!isFinite(light.direction))
-        fail(what, " (", kind, "): direction ", str(light.direction),
+        fail(what, " (", kind, "): direction ", toText(light.direction),
              " is not finite; give a direction such as (0, -1, 0)");
     if (glm::length(light.direction) == 0.0)
         fail(what, " (", kind, "): direction is the zero vector; give the direction in which the "
                    "light travels, e.g. (0, -1, 0) for light from straight above");
     if (!isFinite(light.color) || light.color.x < 0.0 || light.color.y < 0.0 ||
         light.color.z < 0.0)
-        fail(what, " (", kind, "): colour ", str(light.color),
+        fail(what, " (", kind, "): colour ", toText(light.color),
              " must be finite and non-negative (linear RGB, e.g. (1, 1, 1))");
     if (light.color == glm::dvec3(0.0))
         fail(what, " (", kind, "): colour is black, so the light emits nothing; use a positive "
@@ -41,7 +32,7 @@ void validateLight(const Light& light, const std::string& what) {
         return;
     }
     if (!isFinite(light.position))
-        fail(what, " (spot light): position ", str(light.position), " is not finite");
+        fail(what, " (spot light): position ", toText(light.position), " is not finite");
     if (!std::isfinite(light.intensity) || light.intensity <= 0.0)
         fail(what, " (spot light): intensity ", light.intensity,
              " W/sr must be a positive finite number");
