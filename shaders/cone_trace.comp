@@ -42,10 +42,16 @@ uniform int uUseBricks;
 uniform vec3 uVoxelOrigin;
 uniform float uVoxelScale;
 
+// The coarser of the two levels sampled for a footprint of 2^lod voxels.
+int coarseLevelFor(float lod) {
+    return max(uLevels - 1 - int(floor(clamp(lod, 0.0, float(uLevels - 1)))) - 1, 0);
+}
+
 // Radiance at p (voxel space) for a footprint of 2^lod voxels: trilinear inside the bricks of the
-// two nearest levels, linear between them. Returns false with tSkip set when p lies in an empty
-// node of the coarser level: the whole node can be skipped in one step.
-bool sampleRadiance(vec3 p, float lod, vec3 origin, vec3 invDirection, out vec4 value, out float tSkip) {
+// two nearest levels, linear between them. Returns false when p lies in an empty node of the
+// coarser level, with tSkip where the ray leaves that node and emptyLevel its level.
+bool sampleRadiance(vec3 p, float lod, vec3 origin, vec3 invDirection, out vec4 value, out float tSkip,
+                    out int emptyLevel) {
     lod = clamp(lod, 0.0, float(uLevels - 1));
     int fineLevel = uLevels - 1 - int(floor(lod));
     int coarseLevel = max(fineLevel - 1, 0);
@@ -61,6 +67,7 @@ bool sampleRadiance(vec3 p, float lod, vec3 origin, vec3 invDirection, out vec4 
     }
     if (level > fineLevel) fineNode = node;
     if (coarseNode == NONE) {  // empty at the coarse level (or above): skip that empty node
+        emptyLevel = level;
         float size = float(1 << (uLevels - level));
         vec3 lo = vec3(cell >> uint(uLevels - level)) * size;
         tSkip = rayBox(origin, invDirection, lo, lo + size).y;
@@ -100,9 +107,17 @@ vec4 traceCone(vec3 origin, vec3 normal, vec3 direction, float tanHalfAngle) {
         vec3 p = origin + direction * t + normal * (uConeLift * diameter);  // from t, never accumulated
         vec4 value;
         float tSkip;
-        if (!sampleRadiance(p, log2(diameter), origin, invDirection, value, tSkip)) {
-            samplesSaved += uint(max(tSkip - t, 0.0) / (uConeStep * diameter));
-            t = max(tSkip + 1e-3, t + 1e-3);
+        int emptyLevel;
+        if (!sampleRadiance(p, log2(diameter), origin, invDirection, value, tSkip, emptyLevel)) {
+            // Skip the empty node along the very sample sequence a plain march would take
+            // (arithmetic only, no lookups): jumping straight to the node's exit would shift the
+            // step phase from pixel to pixel and print the node grid into the image as moiré.
+            // Stop early where the widening cone starts sampling a level above the empty node.
+            do {
+                t += uConeStep * max(2.0 * t * tanHalfAngle, 1.0);
+                ++samplesSaved;
+            } while (t < tSkip && coarseLevelFor(log2(max(2.0 * t * tanHalfAngle, 1.0))) >= emptyLevel);
+            --samplesSaved;  // the sample that found the node empty was looked up
             continue;
         }
         ++samplesTaken;

@@ -96,7 +96,8 @@ std::unique_ptr<Renderer> renderRadiance(Scene& scene, const std::vector<Light>&
 TEST(Gi, OneVoxelWallsStayMostlyOpaqueAtCoarseLevels) {
     // The same environment as a shell of one-voxel walls. Averaging opacity would dilute such a
     // wall by half per level and wide cones would see through it (3 % of π·L when bricks held α);
-    // filtering optical depth keeps most of it. The remaining loss is recorded, not hidden.
+    // filtering optical depth keeps it opaque (and an empty-space skip must not jump over a wall
+    // that a widening cone would sample at a coarser level: that cost 40 % here).
     const auto dir = test::testDir();
     const auto model = writeClosedBox(dir, "Kd 0 0 0\nKe 2 2 2\n");
     const ImageF image = renderCli(dir, "thin", "--scene " + model.string() +
@@ -104,8 +105,7 @@ TEST(Gi, OneVoxelWallsStayMostlyOpaqueAtCoarseLevels) {
                                                     " --height 48 --aov indirect");
     const double fraction = windowMean(image, 24, 24, 6, 1) / (glm::pi<double>() * 2.0);
     std::printf("[ thin     ] one-voxel walls: cones recover %.1f %% of π·L\n", 100.0 * fraction);
-    EXPECT_GT(fraction, 0.5);
-    EXPECT_LT(fraction, 0.97) << "if thin walls are now fully opaque, update the README's limits section";
+    EXPECT_GT(fraction, 0.95);
 }
 
 TEST(Gi, ConstantEnvironmentGivesPiTimesRadianceForEveryConeSet) {
