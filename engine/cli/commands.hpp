@@ -14,5 +14,6 @@ Run addInfoCommand(CLI::App& app);
 Run addReferenceCommand(CLI::App&);
 Run addCompareCommand(CLI::App&);
 Run addViewCommand(CLI::App&);
+Run addBenchCommand(CLI::App&);
 
 }  // namespace vct::cli

@@ -24,6 +24,7 @@ int main(int argc, char** argv) {
     cli::Run reference = cli::addReferenceCommand(app);
     cli::Run compare = cli::addCompareCommand(app);
     cli::Run view = cli::addViewCommand(app);
+    cli::Run bench = cli::addBenchCommand(app);
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {
@@ -37,6 +38,7 @@ int main(int argc, char** argv) {
         if (app.got_subcommand("reference")) reference();
         if (app.got_subcommand("compare")) compare();
         if (app.got_subcommand("view")) view();
+        if (app.got_subcommand("bench")) bench();
     } catch (const Error& e) {
         std::fprintf(stderr, "vct: error: %s\n", e.what());
         return 1;

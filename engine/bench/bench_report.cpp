@@ -1,0 +1,426 @@
+#include "bench/bench_report.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <map>
+#include <sstream>
+
+#include <unistd.h>
+
+#include "core/error.hpp"
+
+namespace vct::bench {
+namespace {
+
+std::string num(double v, const char* format = "%.6g") {
+    if (std::isinf(v)) return v > 0 ? "inf" : "-inf";
+    if (std::isnan(v)) return "nan";
+    char text[48];
+    std::snprintf(text, sizeof text, format, v);
+    return text;
+}
+
+double rmseOf(const BenchRow& r, bool indirect) { return indirect ? r.error.indirectRmse : r.error.rmse; }
+
+std::vector<const BenchRow*> curveOf(const std::vector<BenchRow>& rows) {
+    std::vector<const BenchRow*> curve;
+    for (const auto& r : rows)
+        if (r.kind == "pathtracer") curve.push_back(&r);
+    std::sort(curve.begin(), curve.end(), [](const BenchRow* a, const BenchRow* b) { return a->spp < b->spp; });
+    return curve;
+}
+
+const BenchRow* defaultRow(const std::vector<BenchRow>& rows) {
+    for (const auto& r : rows)
+        if (r.kind == "engine" && r.isDefault) return &r;
+    return nullptr;
+}
+
+// Engine pass costs grouped for the markdown table.
+struct PassGroup {
+    const char* title;
+    std::vector<std::string> passes;
+};
+const std::vector<PassGroup>& passGroups() {
+    static const std::vector<PassGroup> groups = {
+        {"octree", {"voxelize", "svo_build", "svo_leaves", "svo_neighbours", "bricks", "bricks_mip"}},
+        {"light_view", {"light_view"}},
+        {"inject + radiance filter", {"inject", "radiance_mip", "radiance_border"}},
+        {"gbuffer", {"gbuffer"}},
+        {"direct_lighting", {"direct_lighting"}},
+        {"cone_trace", {"cone_trace"}},
+        {"composite", {"composite"}},
+    };
+    return groups;
+}
+
+double groupMs(const BenchRow& r, const PassGroup& g) {
+    double ms = 0.0;
+    for (const auto& p : r.passes)
+        if (std::find(g.passes.begin(), g.passes.end(), p.name) != g.passes.end()) ms += p.ms();
+    return ms;
+}
+
+std::string quoteShell(const std::string& s) {
+    std::string q = "'";
+    for (char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
+    return q + "'";
+}
+
+std::string quoteGnuplot(const std::string& s) {
+    std::string q = "\"";
+    for (char c : s) q += (c == '"' || c == '\\') ? std::string("\\") + c : std::string(1, c);
+    return q + "\"";
+}
+
+bool findInPath(const std::string& program) {
+    const char* path = std::getenv("PATH");
+    if (!path) return false;
+    std::stringstream dirs(path);
+    std::string dir;
+    while (std::getline(dirs, dir, ':')) {
+        if (dir.empty()) continue;
+        std::error_code ec;
+        const auto candidate = std::filesystem::path(dir) / program;
+        if (std::filesystem::is_regular_file(candidate, ec) && access(candidate.c_str(), X_OK) == 0) return true;
+    }
+    return false;
+}
+
+// Tick marks at 1, 2, 5 × 10^k covering [lo, hi], labelled with %g (log axes spanning less than a
+// decade otherwise get one labelled tick).
+std::string ticks125(std::pair<double, double> range) {
+    if (!(range.second > 0.0) || !(range.first <= range.second)) return "1";
+    std::string list;
+    const int k0 = int(std::floor(std::log10(range.first))) - 1, k1 = int(std::ceil(std::log10(range.second))) + 1;
+    for (int k = k0; k <= k1; ++k)
+        for (double m : {1.0, 2.0, 5.0}) {
+            const double v = m * std::pow(10.0, k);
+            char text[48];
+            std::snprintf(text, sizeof text, "\"%g\" %g", v, v);
+            if (!list.empty()) list += ", ";
+            list += text;
+        }
+    return list;
+}
+
+std::string shortLabel(const BenchRow& r) {
+    if (r.isDefault) return "default";
+    static const std::map<std::string, std::string> names = {
+        {"voxel_levels", "L"},  {"cones", "cones "},      {"cone_aperture", "aperture "}, {"cone_step", "step "},
+        {"cone_offset", "offset "}, {"cone_lift", "lift "}, {"light_view_res", "light view "}, {"pcf_radius", "pcf "}};
+    if (r.parameter == "bricks") return r.value == "true" ? "bricks" : "no bricks";
+    if (r.parameter == "gi") return r.value == "true" ? "GI on" : "GI off";
+    auto it = names.find(r.parameter);
+    return (it == names.end() ? r.parameter + "=" : it->second) + r.value;
+}
+
+}  // namespace
+
+std::vector<bool> paretoFront(const std::vector<BenchRow>& rows, bool indirect) {
+    std::vector<bool> front(rows.size(), false);
+    for (std::size_t i = 0; i < rows.size(); ++i) {
+        if (rows[i].kind != "engine") continue;
+        bool dominated = false;
+        for (std::size_t j = 0; j < rows.size() && !dominated; ++j) {
+            if (j == i || rows[j].kind != "engine") continue;
+            const double ti = rows[i].frameMs, tj = rows[j].frameMs;
+            const double ei = rmseOf(rows[i], indirect), ej = rmseOf(rows[j], indirect);
+            dominated = tj <= ti && ej <= ei && (tj < ti || ej < ei);
+        }
+        front[i] = !dominated;
+    }
+    return front;
+}
+
+void markPareto(std::vector<BenchRow>& rows) {
+    const std::vector<bool> front = paretoFront(rows, false);
+    for (std::size_t i = 0; i < rows.size(); ++i) rows[i].pareto = front[i];
+}
+
+EqualErrorTime pathTracerTimeAt(const std::vector<BenchRow>& rows, double rmse, bool indirect) {
+    EqualErrorTime result;
+    const std::vector<const BenchRow*> curve = curveOf(rows);
+    if (curve.empty() || !(rmse > 0.0)) return result;
+    result.valid = true;
+    const BenchRow& first = *curve.front();
+    if (rmse >= rmseOf(first, indirect)) {
+        const double e = rmseOf(first, indirect);
+        result.ms = first.frameMs * (e / rmse) * (e / rmse);
+        result.extrapolated = rmse > e;
+        result.how = result.extrapolated ? concat("below ", first.spp, " spp (extrapolated, time ∝ 1/RMSE²)")
+                                         : concat("at ", first.spp, " spp");
+        return result;
+    }
+    for (std::size_t i = 0; i + 1 < curve.size(); ++i) {
+        const double e0 = rmseOf(*curve[i], indirect), e1 = rmseOf(*curve[i + 1], indirect);
+        if (e0 >= rmse && rmse >= e1 && e0 > e1) {
+            const double f = (std::log(e0) - std::log(rmse)) / (std::log(e0) - std::log(e1));
+            result.ms = std::exp(std::log(curve[i]->frameMs) + f * (std::log(curve[i + 1]->frameMs) - std::log(curve[i]->frameMs)));
+            result.how = concat("between ", curve[i]->spp, " and ", curve[i + 1]->spp, " spp");
+            return result;
+        }
+    }
+    // Below the whole curve: the noise floor of the reference makes this a rough estimate.
+    const BenchRow& last = *curve.back();
+    const double e = rmseOf(last, indirect);
+    result.ms = last.frameMs * (e / rmse) * (e / rmse);
+    result.extrapolated = true;
+    result.how = concat("beyond ", last.spp, " spp (extrapolated, time ∝ 1/RMSE²)");
+    return result;
+}
+
+std::string describeSettings(const RenderSettings& s) {
+    std::string text;
+    for (const auto& p : parameterNames()) text += (text.empty() ? "" : ", ") + p + "=" + parameterValue(s, p);
+    return text;
+}
+
+void writeCsv(const std::filesystem::path& path, const std::vector<BenchRow>& rows) {
+    const std::vector<bool> frontIndirect = paretoFront(rows, true);
+    std::vector<std::string> passNames;
+    for (const auto& r : rows)
+        for (const auto& p : r.passes)
+            if (std::find(passNames.begin(), passNames.end(), p.name) == passNames.end()) passNames.push_back(p.name);
+
+    std::ofstream out(path);
+    out << "kind,label,parameter,value,is_default,spp";
+    for (const auto& p : parameterNames()) out << "," << p;
+    out << ",frame_ms,frame_static_ms,frame_ms_all_repeats,update_ms,update_passes,setup_ms,memory_mib,cone_samples"
+           ",rmse,relmse,psnr,ssim,direct_rmse,indirect_rmse,indirect_relmse,indirect_ratio,pareto,pareto_indirect"
+           ",incremental_identical";
+    for (const auto& p : passNames) out << ",ms_" << p;
+    out << "\n";
+    for (std::size_t i = 0; i < rows.size(); ++i) {
+        const BenchRow& r = rows[i];
+        const bool engine = r.kind == "engine";
+        out << r.kind << "," << r.label << "," << r.parameter << "," << r.value << "," << (r.isDefault ? 1 : 0) << ","
+            << (engine ? "" : std::to_string(r.spp));
+        for (const auto& p : parameterNames()) out << "," << (engine ? parameterValue(r.settings, p) : "");
+        std::string all;
+        for (double ms : r.frameSamplesMs) {
+            if (!all.empty()) all += ';';
+            all += num(ms, "%.2f");
+        }
+        out << "," << num(r.frameMs, "%.3f") << "," << num(r.frameStaticMs, "%.3f") << "," << all << ","
+            << (engine ? num(r.updateMs, "%.3f") : "") << "," << r.updatePasses << ","
+            << (engine ? "" : num(r.setupMs, "%.3f")) << ","
+            << (engine ? num(double(r.memoryBytes) / (1024.0 * 1024.0), "%.2f") : "") << ","
+            << (engine ? std::to_string(r.coneSamples) : "");
+        out << "," << num(r.error.rmse) << "," << num(r.error.relMse) << "," << num(r.error.psnr) << ","
+            << num(r.error.ssim) << "," << num(r.error.directRmse) << "," << num(r.error.indirectRmse) << ","
+            << num(r.error.indirectRelMse) << "," << num(r.error.indirectRatio) << "," << (r.pareto ? 1 : 0) << ","
+            << (frontIndirect[i] ? 1 : 0) << "," << (engine ? (r.incrementalIdentical ? "1" : "0") : "");
+        for (const auto& name : passNames) {
+            out << ",";
+            for (const auto& p : r.passes)
+                if (p.name == name) out << num(p.ms(), "%.3f");
+        }
+        out << "\n";
+    }
+    if (!out) fail("cannot write '", path.string(), "' (disk full?)");
+}
+
+void writeMarkdown(const std::filesystem::path& path, const std::vector<BenchRow>& rows, const BenchSummary& s,
+                   const std::string& chartFile) {
+    std::ostringstream md;
+    const BenchRow* def = defaultRow(rows);
+    md << "# Run time against error: " << s.scene << " (" << s.name << ")\n\n";
+    md << "Produced by `" << s.command << "` on " << s.date << ". Engine: " << s.renderer << " (" << s.backend
+       << "); CPU: " << s.cpu << ". Image " << s.width << "×" << s.height << ", camera `" << s.camera
+       << "`, display for PSNR/SSIM: " << num(s.exposureEV) << " EV, " << s.tonemap << ".\n\n";
+    md << "Ground truth: `vct reference` with " << s.referenceBounces << " indirect bounce"
+       << (s.referenceBounces == 1 ? "" : "s") << ", " << s.referenceSpp << " spp, seed " << s.referenceSeed << " ("
+       << num(s.referenceSeconds, "%.1f") << " s, direct-only " << num(s.referenceDirectSeconds, "%.1f") << " s"
+       << (s.referenceFromCache ? ", read from benchmarks/cache" : "") << "; key " << s.referenceKey
+       << "). Its own noise, √(mean variance) = " << num(s.referenceNoiseRmse, "%.3g")
+       << " RMSE, is the floor under every error below. Indirect part: engine final − engine direct AOV, reference "
+          "full − reference direct-only (bounces 0). The path-tracer curve uses seed "
+       << s.curveSeed << " (independent of the reference's samples), " << s.referenceBounces << " bounce"
+       << (s.referenceBounces == 1 ? "" : "s") << ", " << s.pathTracerThreads << " threads; its time excludes the BVH build.\n\n";
+    md << "Engine timing: one-at-a-time sweep around the default (" << s.defaultSettings
+       << "). `frame ms` is the fastest of " << s.repeats
+       << " warm full frames (every pass, octree included) as max(GPU span, Σ pass CPU ms), because llvmpipe runs "
+          "compute passes on the CPU at submission; `static ms` sums the passes after the octree (light_view … "
+          "composite: a frame with moving lights and camera over static geometry); `update ms` is the frame after "
+          "switching from the default to the point (only the passes that depend on the change). Both renderers run "
+          "on the same CPU cores here, so the speedups below are CPU-against-CPU numbers; on a GPU the engine's "
+          "side changes by orders of magnitude.\n\n";
+    if (!chartFile.empty()) md << "![error against time](" << chartFile << ")\n\n";
+
+    md << "## Summary\n\n";
+    if (def) {
+        md << "- Default point: full image RMSE " << num(def->error.rmse, "%.4g") << ", relMSE "
+           << num(def->error.relMse, "%.4g") << ", PSNR " << num(def->error.psnr, "%.2f") << " dB, SSIM "
+           << num(def->error.ssim, "%.4f") << "; indirect part RMSE " << num(def->error.indirectRmse, "%.4g")
+           << ", relMSE " << num(def->error.indirectRelMse, "%.4g") << ", mean " << num(def->error.indirectRatio, "%.3f")
+           << "× the reference's; direct part RMSE " << num(def->error.directRmse, "%.4g") << ". Frame "
+           << num(def->frameMs, "%.1f") << " ms (static geometry " << num(def->frameStaticMs, "%.1f") << " ms).\n";
+        for (bool indirect : {false, true}) {
+            const double e = indirect ? def->error.indirectRmse : def->error.rmse;
+            const EqualErrorTime t = pathTracerTimeAt(rows, e, indirect);
+            if (!t.valid) continue;
+            md << "- Equal error, " << (indirect ? "indirect part" : "full image") << ": the path tracer reaches RMSE "
+               << num(e, "%.4g") << " in " << num(t.ms, "%.1f") << " ms (" << t.how << "): "
+               << num(t.ms / def->frameMs, "%.2f") << "× the engine's full frame, "
+               << num(t.ms / def->frameStaticMs, "%.2f") << "× its static-geometry frame.\n";
+        }
+    }
+    md << "- Pareto front (full-image RMSE against frame ms):";
+    {
+        std::vector<const BenchRow*> front;
+        for (const auto& r : rows)
+            if (r.kind == "engine" && r.pareto) front.push_back(&r);
+        std::sort(front.begin(), front.end(), [](auto* a, auto* b) { return a->frameMs < b->frameMs; });
+        for (std::size_t i = 0; i < front.size(); ++i)
+            md << (i ? "," : "") << " " << front[i]->label << " (" << num(front[i]->frameMs, "%.0f") << " ms, "
+               << num(front[i]->error.rmse, "%.4g") << ")";
+    }
+    md << "\n";
+    {
+        const std::vector<bool> front = paretoFront(rows, true);
+        std::vector<const BenchRow*> list;
+        for (std::size_t i = 0; i < rows.size(); ++i)
+            if (front[i]) list.push_back(&rows[i]);
+        std::sort(list.begin(), list.end(), [](auto* a, auto* b) { return a->frameMs < b->frameMs; });
+        md << "- Pareto front (indirect RMSE against frame ms):";
+        for (std::size_t i = 0; i < list.size(); ++i)
+            md << (i ? "," : "") << " " << list[i]->label << " (" << num(list[i]->frameMs, "%.0f") << " ms, "
+               << num(list[i]->error.indirectRmse, "%.4g") << ")";
+        md << "\n";
+    }
+    bool allIdentical = true;
+    for (const auto& r : rows)
+        if (r.kind == "engine") allIdentical = allIdentical && r.incrementalIdentical;
+    md << "- Incrementally updated images identical to full frames at every point: " << (allIdentical ? "yes" : "**no**")
+       << ".\n\n";
+
+    md << "## Engine points\n\n";
+    md << "| point | frame ms | static ms | update ms | memory MiB | RMSE | relMSE | PSNR dB | SSIM | direct RMSE | "
+          "indirect RMSE | indirect relMSE | indirect ratio | Pareto |\n";
+    md << "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+    for (const auto& r : rows) {
+        if (r.kind != "engine") continue;
+        md << "| " << (r.isDefault ? "**default**" : r.label) << " | " << num(r.frameMs, "%.1f") << " | "
+           << num(r.frameStaticMs, "%.1f") << " | " << num(r.updateMs, "%.1f") << " | "
+           << num(double(r.memoryBytes) / (1024.0 * 1024.0), "%.1f") << " | " << num(r.error.rmse, "%.4g") << " | "
+           << num(r.error.relMse, "%.4g") << " | " << num(r.error.psnr, "%.2f") << " | " << num(r.error.ssim, "%.4f")
+           << " | " << num(r.error.directRmse, "%.4g") << " | " << num(r.error.indirectRmse, "%.4g") << " | "
+           << num(r.error.indirectRelMse, "%.4g") << " | " << num(r.error.indirectRatio, "%.3f") << " | "
+           << (r.pareto ? "●" : "") << " |\n";
+    }
+    md << "\n## Path tracer\n\n";
+    md << "| spp | time ms | RMSE | relMSE | PSNR dB | SSIM | direct RMSE | indirect RMSE | indirect relMSE |\n";
+    md << "|---|---|---|---|---|---|---|---|---|\n";
+    for (const BenchRow* r : curveOf(rows))
+        md << "| " << r->spp << " | " << num(r->frameMs, "%.1f") << " | " << num(r->error.rmse, "%.4g") << " | "
+           << num(r->error.relMse, "%.4g") << " | " << num(r->error.psnr, "%.2f") << " | "
+           << num(r->error.ssim, "%.4f") << " | " << num(r->error.directRmse, "%.4g") << " | "
+           << num(r->error.indirectRmse, "%.4g") << " | " << num(r->error.indirectRelMse, "%.4g") << " |\n";
+    md << "\n## Engine pass costs (ms, fastest full frame; a pass costs max(GPU ms, CPU ms))\n\n| point |";
+    for (const auto& g : passGroups()) md << " " << g.title << " |";
+    md << "\n|---|";
+    for (std::size_t i = 0; i < passGroups().size(); ++i) md << "---|";
+    md << "\n";
+    for (const auto& r : rows) {
+        if (r.kind != "engine") continue;
+        md << "| " << r.label << " |";
+        for (const auto& g : passGroups()) md << " " << num(groupMs(r, g), "%.1f") << " |";
+        md << "\n";
+    }
+    std::ofstream out(path);
+    out << md.str();
+    if (!out) fail("cannot write '", path.string(), "' (disk full?)");
+}
+
+std::string writeChart(const std::filesystem::path& script, const std::filesystem::path& png,
+                       const std::vector<BenchRow>& rows, const BenchSummary& s) {
+    const std::vector<bool> frontFull = paretoFront(rows, false), frontIndirect = paretoFront(rows, true);
+    std::ostringstream gp;
+    gp << "# Drawn by `vct bench` (" << s.command << "); run `gnuplot " << script.filename().string()
+       << "` to draw it again.\n";
+    gp << "set terminal pngcairo size 1600,700 enhanced font 'DejaVu Sans,10'\n";
+    gp << "set output " << quoteGnuplot(png.string()) << "\n";
+    auto block = [&](const char* name, auto select) {
+        std::vector<const BenchRow*> list;
+        for (std::size_t i = 0; i < rows.size(); ++i)
+            if (select(i)) list.push_back(&rows[i]);
+        std::sort(list.begin(), list.end(), [](auto* a, auto* b) { return a->frameMs < b->frameMs; });
+        gp << "$" << name << " << EOD\n";
+        for (const BenchRow* r : list)
+            gp << num(r->frameMs, "%.4g") << " " << num(r->error.rmse, "%.6g") << " "
+               << num(r->error.indirectRmse, "%.6g") << " "
+               << quoteGnuplot(r->kind == "engine" ? shortLabel(*r) : std::to_string(r->spp)) << "\n";
+        gp << "EOD\n";
+    };
+    block("engine", [&](std::size_t i) { return rows[i].kind == "engine"; });
+    block("pathtracer", [&](std::size_t i) { return rows[i].kind == "pathtracer"; });
+    block("pareto", [&](std::size_t i) { return bool(frontFull[i]); });
+    block("paretoIndirect", [&](std::size_t i) { return bool(frontIndirect[i]); });
+    block("default", [&](std::size_t i) { return rows[i].kind == "engine" && rows[i].isDefault; });
+    std::pair<double, double> fullRange{1e300, 0.0}, indirectRange{1e300, 0.0}, timeRange{1e300, 0.0};
+    auto extend = [](std::pair<double, double>& r, double v) {
+        if (v > 0.0 && std::isfinite(v)) r = {std::min(r.first, v), std::max(r.second, v)};
+    };
+    for (const auto& r : rows) {
+        extend(fullRange, r.error.rmse);
+        extend(indirectRange, r.error.indirectRmse);
+        extend(timeRange, r.frameMs);
+    }
+    extend(fullRange, s.referenceNoiseRmse);
+    extend(indirectRange, s.referenceNoiseRmse);
+    gp << "set xtics (" << ticks125(timeRange) << ")\n";
+    gp << "noise = " << num(s.referenceNoiseRmse > 0 ? s.referenceNoiseRmse : 1e-30, "%.6g") << "\n";
+    gp << "set multiplot layout 1,2 title "
+       << quoteGnuplot(concat(s.scene, " ", s.width, "x", s.height, ": error against time, vct settings and the path ",
+                              "tracer (", s.referenceBounces, " bounce, reference ", s.referenceSpp, " spp), ",
+                              s.renderer, ", ", s.date))
+       << " font ',12'\n";
+    gp << "set logscale xy\nset grid xtics ytics mxtics mytics lc rgb '#e0e0e0'\n";
+    gp << "set xlabel 'time (ms, log): vct full warm frame / path-tracer render, same CPU'\n";
+    gp << "set key top right box opaque font ',9'\nset offsets graph 0.08, graph 0.25, graph 0.1, graph 0.1\n";
+    gp << "set autoscale fix\n";
+    for (int panel = 0; panel < 2; ++panel) {
+        const int column = panel == 0 ? 2 : 3;
+        gp << "set ytics (" << ticks125(column == 2 ? fullRange : indirectRange) << ")\n";
+        gp << "set ylabel '" << (panel == 0 ? "RMSE of the full image" : "RMSE of the indirect part")
+           << " vs reference (linear, log)'\n";
+        gp << "set title '" << (panel == 0 ? "full image" : "indirect part alone (final − direct)") << "'\n";
+        gp << "plot $pathtracer using 1:" << column
+           << " with linespoints pt 5 ps 0.8 lw 1.5 lc rgb '#d62728' title 'path tracer (spp)', \\\n"
+           << "     $pathtracer using 1:" << column
+           << ":(sprintf('%s spp', strcol(4))) with labels offset char 0,-0.9 font ',8' tc rgb '#d62728' notitle, \\\n"
+           << "     " << (panel == 0 ? "$pareto" : "$paretoIndirect") << " using 1:" << column
+           << " with linespoints pt 4 ps 1.9 lw 2 dt 2 lc rgb '#1f77b4' title 'Pareto front (vct)', \\\n"
+           << "     $engine using 1:" << column << " with points pt 7 ps 1.0 lc rgb '#1f77b4' title 'vct settings', \\\n"
+           << "     $engine using 1:" << column << ":4 with labels left offset char 0.6,0.35 font ',8' notitle, \\\n"
+           << "     $default using 1:" << column << " with points pt 6 ps 2.4 lw 2 lc rgb 'black' title 'vct default', \\\n"
+           << "     noise with lines dt 3 lc rgb '#808080' title 'reference noise (est.)'\n";
+    }
+    gp << "unset multiplot\n";
+    {
+        std::ofstream out(script);
+        out << gp.str();
+        if (!out) fail("cannot write '", script.string(), "' (disk full?)");
+    }
+    if (!findInPath("gnuplot"))
+        return concat("gnuplot is not installed, so no chart was drawn; the data and the script are in ",
+                      script.string(), ". Install it (Debian: apt-get install gnuplot-nox) and run: gnuplot ",
+                      script.string());
+    std::filesystem::remove(png);
+    const std::string command = "gnuplot " + quoteShell(script.string()) + " 2>&1";
+    std::string output;
+    if (FILE* pipe = popen(command.c_str(), "r")) {
+        char buffer[1024];
+        while (std::size_t n = std::fread(buffer, 1, sizeof buffer, pipe)) output.append(buffer, n);
+        const int status = pclose(pipe);
+        if (status == 0 && std::filesystem::exists(png)) return "";
+        return concat("gnuplot failed on ", script.string(), " (exit status ", status, "): ", output);
+    }
+    return concat("cannot run gnuplot: ", command);
+}
+
+}  // namespace vct::bench

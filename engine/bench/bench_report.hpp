@@ -1,0 +1,57 @@
+#pragma once
+// The benchmark's outputs: CSV (one row per engine point and per path-tracer spp), a markdown
+// report, and a gnuplot chart of error against time (log–log) with the engine points labelled,
+// the path tracer's curve and the engine's Pareto front. Also the two derived numbers: the Pareto
+// front and the equal-error time of the path tracer.
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "bench/bench_run.hpp"
+
+namespace vct::bench {
+
+// Marks BenchRow::pareto on the engine rows: a point is on the front when no other engine point
+// is at least as fast and at least as accurate (full-image RMSE) and better in one of them.
+// `indirect` uses the indirect part's RMSE instead and returns the flags without storing them.
+std::vector<bool> paretoFront(const std::vector<BenchRow>& rows, bool indirect);
+void markPareto(std::vector<BenchRow>& rows);
+
+// The time the path tracer needs to reach `rmse` (full image, or the indirect part), read off its
+// curve (the path-tracer rows) by linear interpolation of log time against log RMSE between the
+// two spp values around it. Outside the curve: extrapolated with error ∝ 1/√spp, i.e. time ∝
+// 1/RMSE², from its nearest end, and flagged.
+struct EqualErrorTime {
+    double ms = 0.0;
+    bool valid = false;         // false without a path-tracer curve
+    bool extrapolated = false;
+    std::string how;            // "between 4 and 8 spp", "below 1 spp (extrapolated)", …
+};
+EqualErrorTime pathTracerTimeAt(const std::vector<BenchRow>& rows, double rmse, bool indirect);
+
+struct BenchSummary {
+    std::string name, scene, camera, command, date, renderer, backend, cpu;
+    int width = 0, height = 0, repeats = 0, pathTracerThreads = 0;
+    double exposureEV = 0.0;
+    std::string tonemap;
+    int referenceSpp = 0, referenceBounces = 0;
+    std::uint64_t referenceSeed = 0, curveSeed = 0;
+    double referenceSeconds = 0.0, referenceDirectSeconds = 0.0, referenceNoiseRmse = 0.0;
+    bool referenceFromCache = false;
+    std::string referenceKey;
+    std::string defaultSettings;  // "voxel_levels=8, cones=5, …"
+};
+
+// The default point's settings as "name=value, …" over every sweep parameter.
+std::string describeSettings(const RenderSettings& settings);
+
+void writeCsv(const std::filesystem::path& path, const std::vector<BenchRow>& rows);
+void writeMarkdown(const std::filesystem::path& path, const std::vector<BenchRow>& rows, const BenchSummary& summary,
+                   const std::string& chartFile);
+// Writes the gnuplot script `script` (self-contained: the data is inline) drawing `png`, then runs
+// gnuplot on it when it is installed. Returns an empty string when the chart was drawn, else a
+// message saying why not and how to draw it.
+std::string writeChart(const std::filesystem::path& script, const std::filesystem::path& png,
+                       const std::vector<BenchRow>& rows, const BenchSummary& summary);
+
+}  // namespace vct::bench

@@ -1,0 +1,231 @@
+#include "bench/sweep.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <set>
+
+#include "core/error.hpp"
+#include "voxel/voxel_grid.hpp"
+
+namespace vct::bench {
+namespace {
+
+using Json = nlohmann::ordered_json;
+
+std::string formatNumber(double v) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%g", v);
+    return text;
+}
+
+int integer(const Json& v, const std::string& what, int lo, int hi) {
+    if (!v.is_number_integer() && !(v.is_number_float() && std::floor(v.get<double>()) == v.get<double>()))
+        fail(what, " must be an integer, not ", v.dump());
+    const double d = v.get<double>();
+    if (d < lo || d > hi) fail(what, " ", v.dump(), " is out of range; use ", lo, "..", hi);
+    return int(d);
+}
+
+double number(const Json& v, const std::string& what, double lo, double hi) {
+    if (!v.is_number()) fail(what, " must be a number, not ", v.dump());
+    const double d = v.get<double>();
+    if (!std::isfinite(d) || d < lo || d > hi) fail(what, " ", v.dump(), " is out of range; use ", lo, "..", hi);
+    return d;
+}
+
+bool boolean(const Json& v, const std::string& what) {
+    if (!v.is_boolean()) fail(what, " must be true or false, not ", v.dump());
+    return v.get<bool>();
+}
+
+void checkKeys(const Json& object, const std::string& what, const std::set<std::string>& allowed) {
+    if (!object.is_object()) fail(what, " must be a JSON object");
+    for (const auto& [key, value] : object.items())
+        if (!allowed.count(key)) {
+            std::string list;
+            for (const auto& a : allowed) list += (list.empty() ? "" : ", ") + a;
+            fail("unknown key '", key, "' in ", what, "; the keys are ", list);
+        }
+}
+
+}  // namespace
+
+const std::vector<std::string>& parameterNames() {
+    static const std::vector<std::string> names = {"voxel_levels", "cones",          "cone_aperture", "cone_step",
+                                                   "cone_offset",  "cone_lift",      "bricks",        "light_view_res",
+                                                   "pcf_radius",   "gi"};
+    return names;
+}
+
+void applyParameter(RenderSettings& s, const std::string& name, const Json& v) {
+    const std::string what = "'" + name + "'";
+    if (name == "voxel_levels") {
+        s.voxelLevels = integer(v, what, kMinVoxelLevels, kMaxVoxelLevels);
+    } else if (name == "cones") {
+        const int n = integer(v, what, 1, 16);
+        if (n != 1 && n != 5 && n != 6 && n != 9 && n != 16) fail(what, " ", n, " is not a cone set; use 1, 5, 6, 9 or 16");
+        s.cones.cones = n;
+    } else if (name == "cone_aperture") {
+        s.cones.apertureScale = float(number(v, what, 1e-3, 4.0));
+    } else if (name == "cone_step") {
+        s.cones.step = float(number(v, what, 0.05, 4.0));
+    } else if (name == "cone_offset") {
+        s.cones.offset = float(number(v, what, 0.0, 16.0));
+    } else if (name == "cone_lift") {
+        s.cones.lift = float(number(v, what, 0.0, 16.0));
+    } else if (name == "bricks") {
+        s.bricks = boolean(v, what);
+    } else if (name == "light_view_res") {
+        s.lightViewResolution = integer(v, what, 16, 16384);
+    } else if (name == "pcf_radius") {
+        s.pcfRadius = integer(v, what, 0, 8);
+    } else if (name == "gi") {
+        s.gi = boolean(v, what);
+    } else {
+        std::string list;
+        for (const auto& p : parameterNames()) list += (list.empty() ? "" : ", ") + p;
+        fail("unknown parameter '", name, "'; the parameters are ", list);
+    }
+}
+
+std::string parameterValue(const RenderSettings& s, const std::string& name) {
+    if (name == "voxel_levels") return std::to_string(s.voxelLevels);
+    if (name == "cones") return std::to_string(s.cones.cones);
+    if (name == "cone_aperture") return formatNumber(s.cones.apertureScale);
+    if (name == "cone_step") return formatNumber(s.cones.step);
+    if (name == "cone_offset") return formatNumber(s.cones.offset);
+    if (name == "cone_lift") return formatNumber(s.cones.lift);
+    if (name == "bricks") return s.bricks ? "true" : "false";
+    if (name == "light_view_res") return std::to_string(s.lightViewResolution);
+    if (name == "pcf_radius") return std::to_string(s.pcfRadius);
+    if (name == "gi") return s.gi ? "true" : "false";
+    fail("unknown parameter '", name, "'");
+}
+
+SweepDefinition parseSweep(const Json& j, const std::string& name, const std::filesystem::path& file) {
+    SweepDefinition s;
+    s.name = name;
+    s.file = file;
+    const std::string in = " in " + (file.empty() ? std::string("the sweep") : file.string());
+    try {
+        checkKeys(j, "the sweep definition",
+                  {"name", "scene", "camera", "width", "height", "exposure", "tonemap", "repeats", "reference",
+                   "pathtracer_curve", "default", "sweep", "comment"});
+        if (j.contains("name")) {
+            if (!j["name"].is_string() || j["name"].get<std::string>().empty()) fail("'name' must be a non-empty string");
+            s.name = j["name"].get<std::string>();
+            for (char c : s.name)
+                if (!(std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-'))
+                    fail("'name' may only hold letters, digits, '_' and '-' (it names the output files)");
+        }
+        if (j.contains("scene")) {
+            if (!j["scene"].is_string()) fail("'scene' must be a string: cornell, sponza or a model path");
+            s.scene = j["scene"].get<std::string>();
+        }
+        if (j.contains("camera")) {
+            if (!j["camera"].is_string()) fail("'camera' must be a preset name");
+            s.camera = j["camera"].get<std::string>();
+        }
+        if (j.contains("width")) s.width = integer(j["width"], "'width'", 1, 16384);
+        if (j.contains("height")) s.height = integer(j["height"], "'height'", 1, 16384);
+        if (j.contains("exposure")) s.exposureEV = number(j["exposure"], "'exposure'", -64, 64);
+        if (j.contains("tonemap")) {
+            if (!j["tonemap"].is_string()) fail("'tonemap' must be aces, reinhard or clamp");
+            s.tonemap = j["tonemap"].get<std::string>();
+        }
+        if (j.contains("repeats")) s.repeats = integer(j["repeats"], "'repeats'", 1, 100);
+        if (j.contains("reference")) {
+            const Json& r = j["reference"];
+            checkKeys(r, "'reference'", {"bounces", "spp", "seed"});
+            if (r.contains("bounces")) s.referenceBounces = integer(r["bounces"], "'reference.bounces'", 0, 1024);
+            if (r.contains("spp")) s.referenceSpp = integer(r["spp"], "'reference.spp'", 1, 1 << 24);
+            if (r.contains("seed")) s.referenceSeed = std::uint64_t(integer(r["seed"], "'reference.seed'", 0, 1 << 30));
+        }
+        s.curveSeed = s.referenceSeed + 1;
+        if (j.contains("pathtracer_curve")) {
+            const Json& c = j["pathtracer_curve"];
+            checkKeys(c, "'pathtracer_curve'", {"spp", "seed"});
+            if (c.contains("spp")) {
+                if (!c["spp"].is_array() || c["spp"].empty()) fail("'pathtracer_curve.spp' must be a list of spp values");
+                s.curveSpp.clear();
+                for (const auto& v : c["spp"]) s.curveSpp.push_back(integer(v, "'pathtracer_curve.spp'", 1, 1 << 24));
+                for (std::size_t i = 1; i < s.curveSpp.size(); ++i)
+                    if (s.curveSpp[i] <= s.curveSpp[i - 1]) fail("'pathtracer_curve.spp' must increase");
+            }
+            if (c.contains("seed")) s.curveSeed = std::uint64_t(integer(c["seed"], "'pathtracer_curve.seed'", 0, 1 << 30));
+            if (s.curveSeed == s.referenceSeed)
+                fail("'pathtracer_curve.seed' must differ from the reference's seed (else the curve shares the "
+                     "reference's samples and its error is underestimated)");
+        }
+        if (j.contains("default")) {
+            const Json& d = j["default"];
+            if (!d.is_object()) fail("'default' must be an object of parameters");
+            for (const auto& [key, value] : d.items()) applyParameter(s.defaults, key, value);
+        }
+        if (j.contains("sweep")) {
+            const Json& w = j["sweep"];
+            if (!w.is_object()) fail("'sweep' must be an object: parameter → list of values");
+            for (const auto& [key, values] : w.items()) {
+                if (!values.is_array()) fail("'sweep.", key, "' must be a list of values");
+                RenderSettings probe = s.defaults;
+                std::vector<Json> list;
+                for (const auto& v : values) {
+                    applyParameter(probe, key, v);  // checks name, type and range
+                    list.push_back(v);
+                }
+                s.sweep.emplace_back(key, std::move(list));
+            }
+        }
+    } catch (const Error& e) {
+        fail(e.what(), in);
+    }
+    return s;
+}
+
+SweepDefinition loadSweep(const std::filesystem::path& file) {
+    std::ifstream in(file);
+    if (!in) fail("cannot read the sweep file '", file.string(), "'; check the path (benchmarks/sweeps/ holds cornell.json, "
+                  "sponza.json and quick.json)");
+    Json j;
+    try {
+        j = Json::parse(in, nullptr, true, true);  // comments allowed
+    } catch (const nlohmann::json::parse_error& e) {
+        fail("the sweep file '", file.string(), "' is not valid JSON: ", e.what());
+    }
+    return parseSweep(j, file.stem().string(), file);
+}
+
+std::vector<SweepPoint> expandSweep(const SweepDefinition& sweep) {
+    std::vector<SweepPoint> points;
+    SweepPoint base;
+    base.label = "default";
+    base.settings = sweep.defaults;
+    base.isDefault = true;
+    points.push_back(base);
+    std::set<std::string> seen;
+    for (const auto& [parameter, values] : sweep.sweep) {
+        const std::string defaultValue = parameterValue(sweep.defaults, parameter);
+        for (const auto& v : values) {
+            SweepPoint p;
+            p.parameter = parameter;
+            p.settings = sweep.defaults;
+            applyParameter(p.settings, parameter, v);
+            p.value = parameterValue(p.settings, parameter);
+            if (p.value == defaultValue) continue;  // that is the default point
+            p.label = parameter + "=" + p.value;
+            if (!seen.insert(p.label).second) continue;  // listed twice
+            points.push_back(std::move(p));
+        }
+    }
+    return points;
+}
+
+std::string resolveScenePath(const SweepDefinition& sweep) {
+    if (sweep.scene == "cornell" || sweep.scene == "sponza" || sweep.file.empty()) return sweep.scene;
+    const std::filesystem::path p(sweep.scene);
+    if (p.is_absolute()) return sweep.scene;
+    return (sweep.file.parent_path() / p).string();
+}
+
+}  // namespace vct::bench
