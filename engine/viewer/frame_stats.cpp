@@ -16,11 +16,17 @@ void FrameStats::addTimings(const gl::FrameTimings& timings) {
     latest_ = timings;
     push(gpuMs_, float(timings.totalGpuMs));
     std::map<std::string, double> frame;  // a pass may appear more than once (one per light…)
+    std::map<std::string, Measurement> measured;
     for (const auto& pass : timings.passes) {
         frame[pass.name] += pass.gpuMs;
+        Measurement& m = measured[pass.name];
+        m.gpuMs += pass.gpuMs;
+        m.cpuMs += pass.cpuMs;
+        m.frame = timings.frame;
         if (std::find(passOrder_.begin(), passOrder_.end(), pass.name) == passOrder_.end())
             passOrder_.push_back(pass.name);
     }
+    for (const auto& [name, m] : measured) lastRun_[name] = m;
     for (const auto& name : passOrder_) {
         auto& history = passMs_[name];
         // A pass first seen now gets zeros for the frames before, so every history lines up.
@@ -42,5 +48,11 @@ const std::deque<float>& FrameStats::passHistory(const std::string& pass) const 
 }
 
 std::vector<std::string> FrameStats::passNames() const { return passOrder_; }
+
+std::optional<FrameStats::Measurement> FrameStats::lastRun(const std::string& pass) const {
+    const auto it = lastRun_.find(pass);
+    if (it == lastRun_.end()) return std::nullopt;
+    return it->second;
+}
 
 }  // namespace vct::viewer

@@ -29,6 +29,14 @@ public:
     const std::deque<float>& passHistory(const std::string& pass) const;
     std::vector<std::string> passNames() const;  // every pass seen in the history, first-seen order
 
+    // The pass's times in the newest measured frame that ran it (passes skipped since keep the
+    // values of their last run); nullopt if it never ran.
+    struct Measurement {
+        double gpuMs = 0.0, cpuMs = 0.0;
+        std::uint64_t frame = 0;  // GpuTimer frame number
+    };
+    std::optional<Measurement> lastRun(const std::string& pass) const;
+
 private:
     static void push(std::deque<float>& history, float value);
 
@@ -36,6 +44,7 @@ private:
     std::deque<float> frameMs_, gpuMs_;
     std::map<std::string, std::deque<float>> passMs_;
     std::vector<std::string> passOrder_;
+    std::map<std::string, Measurement> lastRun_;
 };
 
 }  // namespace vct::viewer

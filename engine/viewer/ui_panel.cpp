@@ -4,7 +4,6 @@
 
 #include <algorithm>
 #include <cstdio>
-#include <map>
 
 #include "viewer/key_bindings.hpp"
 #include "viewer/light_control.hpp"
@@ -12,7 +11,7 @@
 namespace vct::viewer {
 namespace {
 
-constexpr float kPanelWidth = 380.0f;
+constexpr float kPanelWidth = 470.0f;
 
 float dequeValue(void* data, int index) { return (*static_cast<const std::deque<float>*>(data))[std::size_t(index)]; }
 
@@ -20,7 +19,7 @@ void plot(const char* label, const std::deque<float>& history, const char* overl
     if (history.empty()) return;
     const float top = std::max(1e-3f, *std::max_element(history.begin(), history.end()) * 1.1f);
     ImGui::PlotLines(label, dequeValue, const_cast<std::deque<float>*>(&history), int(history.size()), 0, overlay, 0.0f,
-                     top, ImVec2(-1.0f, height));
+                     top, ImVec2(ImGui::GetContentRegionAvail().x, height));
 }
 
 std::string megabytes(std::size_t bytes) {
@@ -43,50 +42,44 @@ void frameSection(const PanelInputs& in) {
 
 void passesSection(const PanelInputs& in) {
     if (!ImGui::CollapsingHeader("Passes", ImGuiTreeNodeFlags_DefaultOpen)) return;
-    // Timings arrive a frame or more late; ran/skipped is this frame's.
-    std::map<std::string, std::pair<double, double>> timing;  // name -> gpu, cpu
-    if (const auto& latest = in.stats.latest())
-        for (const auto& pass : latest->passes) {
-            auto& t = timing[pass.name];
-            t.first += pass.gpuMs;
-            t.second += pass.cpuMs;
-        }
+    // Ran or skipped (and why) is this frame's; GPU timings arrive a frame or more late, and a
+    // skipped pass shows, dimmed, what it cost when it last ran.
+    const auto& latest = in.stats.latest();
     const ImGuiTableFlags flags = ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV | ImGuiTableFlags_SizingFixedFit;
     if (ImGui::BeginTable("passes", 4, flags)) {
         ImGui::TableSetupColumn("pass");
         ImGui::TableSetupColumn("GPU ms");
         ImGui::TableSetupColumn("CPU ms");
-        ImGui::TableSetupColumn("this frame", ImGuiTableColumnFlags_WidthStretch);
+        ImGui::TableSetupColumn("ran (green) / skipped: why", ImGuiTableColumnFlags_WidthStretch);
         ImGui::TableHeadersRow();
-        double gpuTotal = 0, cpuTotal = 0;
         for (const auto& run : in.renderer.lastFrame()) {
             ImGui::TableNextRow();
             ImGui::TableNextColumn();
             ImGui::TextUnformatted(run.name.c_str());
-            const auto t = timing.find(run.name);
+            const auto measured = in.stats.lastRun(run.name);
+            const bool current = measured && latest && measured->frame == latest->frame;
             ImGui::TableNextColumn();
-            if (t != timing.end()) ImGui::Text("%7.2f", t->second.first);
+            if (measured) (current ? ImGui::Text : ImGui::TextDisabled)("%6.2f", measured->gpuMs);
             ImGui::TableNextColumn();
-            if (t != timing.end()) ImGui::Text("%7.2f", t->second.second);
-            if (t != timing.end()) {
-                gpuTotal += t->second.first;
-                cpuTotal += t->second.second;
-            }
+            if (measured) (current ? ImGui::Text : ImGui::TextDisabled)("%6.2f", measured->cpuMs);
             ImGui::TableNextColumn();
+            ImGui::PushTextWrapPos(0.0f);
             if (run.ran)
                 ImGui::TextColored(ImVec4(0.5f, 0.9f, 0.5f, 1.0f), "ran%s%s", run.reason.empty() ? "" : ": ",
                                    run.reason.c_str());
             else
-                ImGui::TextDisabled("skipped%s%s", run.reason.empty() ? "" : ": ", run.reason.c_str());
-            if (!run.reason.empty() && ImGui::IsItemHovered()) ImGui::SetTooltip("%s", run.reason.c_str());
+                ImGui::TextDisabled("%s", run.reason.empty() ? "skipped" : run.reason.c_str());
+            ImGui::PopTextWrapPos();
         }
         ImGui::TableNextRow();
         ImGui::TableNextColumn();
         ImGui::TextUnformatted("total");
         ImGui::TableNextColumn();
-        ImGui::Text("%7.2f", gpuTotal);
+        if (latest) ImGui::Text("%6.2f", latest->totalGpuMs);
         ImGui::TableNextColumn();
-        ImGui::Text("%7.2f", cpuTotal);
+        if (latest) ImGui::Text("%6.2f", latest->totalCpuMs);
+        ImGui::TableNextColumn();
+        if (latest) ImGui::TextDisabled("timed frame %llu", static_cast<unsigned long long>(latest->frame));
         ImGui::EndTable();
     }
     if (ImGui::TreeNode("GPU ms per pass, last frames")) {
