@@ -1,8 +1,12 @@
 // `vct view`: the interactive viewer (engine/viewer). Takes the scene, camera and light options
 // of `vct render` and its render settings; the window size replaces the image size.
+#include <filesystem>
+
 #include "cli/commands.hpp"
 #include "cli/render_options.hpp"
 #include "cli/scene_options.hpp"
+#include "core/error.hpp"
+#include "viewer/input_script.hpp"
 #include "viewer/key_bindings.hpp"
 #include "viewer/viewer_app.hpp"
 
@@ -18,13 +22,19 @@ struct ViewOptions {
 };
 
 void run(const ViewOptions& o) {
+    // What the user can get wrong is reported before the (possibly slow) scene load.
+    std::optional<viewer::InputScript> script;
+    if (!o.script.empty()) script = viewer::InputScript::load(o.script);
+    viewer::ViewerOptions options = o.viewer;
+    options.screenshotDir = o.screenshotDir;
+    if (!std::filesystem::is_directory(options.screenshotDir))
+        fail("--screenshot-dir '", o.screenshotDir, "' is not a folder");
+    viewer::checkViewerOptions(options);
+
     const Scene scene = loadSceneFromOptions(o.scene);
     const Camera camera = cameraFromOptions(o.scene, scene);
     const RenderSettings settings = renderSettingsFromOptions(o.render, scene);
-    viewer::ViewerOptions options = o.viewer;
-    options.script = o.script;
-    options.screenshotDir = o.screenshotDir;
-    viewer::runViewer(scene, camera, settings, options);
+    viewer::runViewer(scene, camera, settings, options, std::move(script));
 }
 
 }  // namespace

@@ -7,6 +7,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <memory>
 
 #include "core/error.hpp"
@@ -29,6 +30,7 @@ namespace {
 
 constexpr double kScriptFrameSeconds = 1.0 / 60.0;  // scripts move by frames, not by wall time
 constexpr double kSunDegreesPerSecond = 45.0;
+constexpr double kIdleSeconds = 1.0 / 30.0;  // frame interval while no pass has anything to do
 #ifdef NDEBUG
 constexpr bool kDebugBuild = false;
 #else
@@ -81,6 +83,8 @@ public:
             const bool minimised = width == 0 || height == 0 || glfwGetWindowAttrib(window_, GLFW_ICONIFIED);
             if (minimised && !script_)
                 glfwWaitEventsTimeout(0.1);  // nothing to show: sleep instead of spinning
+            else if (idle_ && !script_)
+                glfwWaitEventsTimeout(kIdleSeconds);  // nothing changed: wake on input, or to refresh the panel
             else
                 glfwPollEvents();
             if (glfwWindowShouldClose(window_)) break;
@@ -235,6 +239,8 @@ private:
             renderer_->renderFrame(controller_.camera());
         }
         while (auto timings = renderer_->timer().poll()) stats_.addTimings(*timings);
+        const auto& passes = renderer_->lastFrame();
+        idle_ = std::none_of(passes.begin(), passes.end(), [](const PassRun& pass) { return pass.ran; });
 
         const RenderSettings& applied = renderer_->settings();
         presenter_->present(renderer_->outputTexture(), applied.width, applied.height, width, height);
@@ -308,6 +314,7 @@ private:
     ViewerState state_;
     RenderSettings good_;  // the last settings a frame rendered with
     bool settingsDirty_ = false, lightsDirty_ = false;
+    bool idle_ = false;  // the last frame ran no pass (the picture cannot have changed)
     std::unique_ptr<Renderer> renderer_;
     std::unique_ptr<Presenter> presenter_;
     FrameStats stats_;
@@ -316,17 +323,25 @@ private:
 
 }  // namespace
 
-void runViewer(const Scene& scene, const Camera& startCamera, const RenderSettings& settings,
-               const ViewerOptions& options) {
+void checkViewerOptions(const ViewerOptions& options) {
     if (!(options.renderScale >= 0.1f && options.renderScale <= 1.0f))
         fail("--render-scale ", options.renderScale, " is out of range; use 0.1..1");
     if (options.windowWidth < 1 || options.windowHeight < 1 || options.windowWidth > 16384 ||
         options.windowHeight > 16384)
         fail("window size ", options.windowWidth, "x", options.windowHeight,
              " is out of range; --width and --height must be within 1..16384");
-    // A bad script is reported before a window opens.
-    std::optional<InputScript> script;
-    if (!options.script.empty()) script = InputScript::load(options.script);
+    auto set = [](const char* name) {
+        const char* value = std::getenv(name);
+        return value && *value;
+    };
+    if (!set("DISPLAY") && !set("WAYLAND_DISPLAY"))
+        fail("vct view needs a display and neither DISPLAY nor WAYLAND_DISPLAY is set; on a machine without "
+             "one run it under Xvfb (Xvfb :99 & DISPLAY=:99 vct view ...), or render images with vct render");
+}
+
+void runViewer(const Scene& scene, const Camera& startCamera, const RenderSettings& settings,
+               const ViewerOptions& options, std::optional<InputScript> script) {
+    checkViewerOptions(options);
     ViewerApp app(scene, startCamera, settings, options, std::move(script));
     app.run();
 }

@@ -7,6 +7,7 @@
 
 #include "pipeline/renderer.hpp"
 #include "scene/scene.hpp"
+#include "viewer/input_script.hpp"
 
 namespace vct::viewer {
 
@@ -14,13 +15,16 @@ struct ViewerOptions {
     int windowWidth = 1280;
     int windowHeight = 720;
     float renderScale = 1.0f;                   // render resolution / window resolution
-    std::filesystem::path script;               // empty: interactive
     std::filesystem::path screenshotDir = ".";  // where F12 writes vct_view_NNNN.png
 };
 
-// Runs until Esc, the window is closed or the script ends. `settings` width/height are ignored
-// (the window decides). Throws vct::Error for what the user can fix (no display, bad script).
+// Throws a clear vct::Error unless a window system is reachable (DISPLAY or WAYLAND_DISPLAY set)
+// and the options are in range; cheap, so `vct view` checks before loading a large scene.
+void checkViewerOptions(const ViewerOptions& options);
+
+// Runs until Esc, the window is closed or the script (nullopt: interactive) ends. `settings`
+// width/height are ignored (the window decides). Throws vct::Error for what the user can fix.
 void runViewer(const Scene& scene, const Camera& startCamera, const RenderSettings& settings,
-               const ViewerOptions& options);
+               const ViewerOptions& options, std::optional<InputScript> script);
 
 }  // namespace vct::viewer
