@@ -11,7 +11,7 @@ LightViewMap::LightViewMap(int resolution)
       depth_(gl::createTexture2D(GL_DEPTH_COMPONENT32F, resolution, resolution, 1, "light-view depth")),
       position_(gl::createTexture2D(GL_RGBA32F, resolution, resolution, 1, "light-view position")),
       normal_(gl::createTexture2D(GL_RGBA16F, resolution, resolution, 1, "light-view normal")),
-      flux_(gl::createTexture2D(GL_RGBA16F, resolution, resolution, 1, "light-view flux")),
+      flux_(gl::createTexture2D(GL_RGBA32F, resolution, resolution, 1, "light-view flux")),
       framebuffer_(gl::createFramebuffer("light-view")),
       program_(gl::buildProgram({{GL_VERTEX_SHADER, "scene.vert"}, {GL_FRAGMENT_SHADER, "light_view.frag"}})) {
     // Hardware-filtered shadow comparison; outside the map counts as lit (border depth 0).
@@ -36,7 +36,7 @@ LightViewMap::LightViewMap(int resolution)
         fail("the light-view framebuffer is incomplete on this driver (", resolution, "²)");
 }
 
-std::size_t LightViewMap::bytes() const { return std::size_t(resolution_) * resolution_ * (4 + 16 + 8 + 8); }
+std::size_t LightViewMap::bytes() const { return std::size_t(resolution_) * resolution_ * (4 + 16 + 8 + 16); }
 
 void LightViewMap::render(const GpuScene& gpuScene, const Scene& scene, const Light& light) {
     transform_ = lightView(light, scene, resolution_);

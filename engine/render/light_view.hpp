@@ -16,7 +16,9 @@ public:
     GLuint depth() const { return depth_.id(); }        // DEPTH32F, compare mode GL_GEQUAL
     GLuint position() const { return position_.id(); }  // RGBA32F scene-local, w=0 empty
     GLuint normal() const { return normal_.id(); }      // RGBA16F facing the light
-    GLuint flux() const { return flux_.id(); }          // RGBA16F reflected flux ρ·Φ in W
+    // RGBA32F reflected flux ρ·Φ in W: a texel carries ~1e-4 of the light's intensity, which
+    // half floats lose for dim lights (underflow) and bright ones (overflow past 65504).
+    GLuint flux() const { return flux_.id(); }
     const LightViewTransform& transform() const { return transform_; }
     int resolution() const { return resolution_; }
     std::size_t bytes() const;
