@@ -8,12 +8,13 @@
 
 namespace vct::viewer {
 
-ImGuiLayer::ImGuiLayer(GLFWwindow* window) {
+ImGuiLayer::ImGuiLayer(GLFWwindow* window, bool ignoreMouse) {
     IMGUI_CHECKVERSION();
     ImGui::CreateContext();
     ImGuiIO& io = ImGui::GetIO();
     io.IniFilename = nullptr;  // no imgui.ini in the working folder: every run starts the same
     io.LogFilename = nullptr;
+    if (ignoreMouse) io.ConfigFlags |= ImGuiConfigFlags_NoMouse | ImGuiConfigFlags_NoMouseCursorChange;
     ImGui::StyleColorsDark();
     ImGui::GetStyle().WindowRounding = 3.0f;
     ImGui::GetStyle().Alpha = 0.95f;

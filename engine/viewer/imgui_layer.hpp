@@ -7,8 +7,10 @@ namespace vct::viewer {
 
 class ImGuiLayer {
 public:
-    // Installs ImGui's GLFW callbacks, chained to those the window already has.
-    explicit ImGuiLayer(GLFWwindow* window);
+    // Installs ImGui's GLFW callbacks, chained to those the window already has. `ignoreMouse`:
+    // the panel does not react to the pointer (scripted runs: screenshots must not depend on
+    // where the pointer happens to be).
+    ImGuiLayer(GLFWwindow* window, bool ignoreMouse);
     ~ImGuiLayer();
     ImGuiLayer(const ImGuiLayer&) = delete;
     ImGuiLayer& operator=(const ImGuiLayer&) = delete;

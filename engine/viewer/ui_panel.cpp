@@ -31,8 +31,9 @@ std::string megabytes(std::size_t bytes) {
 void frameSection(const PanelInputs& in) {
     const auto& stats = in.stats;
     const double ms = stats.meanFrameMs();
-    ImGui::Text("frame %.1f ms (%.1f fps)   window %dx%d, render %dx%d", ms, ms > 0 ? 1000.0 / ms : 0.0,
-                in.windowWidth, in.windowHeight, in.renderer.settings().width, in.renderer.settings().height);
+    ImGui::Text("frame %.1f ms (%.1f fps)%s   window %dx%d, render %dx%d", ms, ms > 0 ? 1000.0 / ms : 0.0,
+                in.idle ? " idle" : "", in.windowWidth, in.windowHeight, in.renderer.settings().width,
+                in.renderer.settings().height);
     ImGui::TextDisabled("%s", in.context.renderer.c_str());
     char overlay[64];
     const float gpu = stats.gpuHistory().empty() ? 0.0f : stats.gpuHistory().back();
@@ -96,12 +97,16 @@ void passesSection(const PanelInputs& in) {
 void memorySection(const PanelInputs& in) {
     if (!ImGui::CollapsingHeader("GPU memory")) return;
     std::size_t total = 0;
-    if (ImGui::BeginTable("memory", 2, ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingFixedFit)) {
+    if (ImGui::BeginTable("memory", 2, ImGuiTableFlags_RowBg)) {
+        ImGui::TableSetupColumn("pool", ImGuiTableColumnFlags_WidthStretch);
+        ImGui::TableSetupColumn("size", ImGuiTableColumnFlags_WidthFixed, ImGui::CalcTextSize("0000.0 MiB").x);
         for (const auto& pool : in.renderer.memory()) {
             total += pool.bytes;
             ImGui::TableNextRow();
             ImGui::TableNextColumn();
+            ImGui::PushTextWrapPos(0.0f);
             ImGui::TextUnformatted(pool.name.c_str());
+            ImGui::PopTextWrapPos();
             ImGui::TableNextColumn();
             ImGui::TextUnformatted(megabytes(pool.bytes).c_str());
         }
@@ -174,7 +179,7 @@ void settingsSection(ViewerState& state, bool& changed) {
         changed = true;
     }
     int shownLevel = s.voxelViewLevel ? s.voxelViewLevel : s.voxelLevels;
-    if (ImGui::SliderInt("voxel view level ([ ])", &shownLevel, 1, s.voxelLevels, "%d", ImGuiSliderFlags_AlwaysClamp)) {
+    if (ImGui::SliderInt("view level [ ]", &shownLevel, 1, s.voxelLevels, "%d", ImGuiSliderFlags_AlwaysClamp)) {
         s.voxelViewLevel = shownLevel == s.voxelLevels ? 0 : shownLevel;
         changed = true;
     }
@@ -230,7 +235,7 @@ PanelEdits UiPanel::draw(ViewerState& state, const PanelInputs& in) {
     PanelEdits edits;
     ImGui::SetNextWindowPos(ImVec2(8.0f, 8.0f), ImGuiCond_FirstUseEver);
     ImGui::SetNextWindowSize(ImVec2(std::max(std::min(kPanelWidth, float(in.windowWidth) - 16.0f), 120.0f),
-                                    std::max(std::min(float(in.windowHeight) - 16.0f, 560.0f), 80.0f)),
+                                    std::max(std::min(float(in.windowHeight) - 16.0f, 900.0f), 80.0f)),
                              ImGuiCond_FirstUseEver);
     ImGui::SetNextWindowBgAlpha(0.82f);
     if (!ImGui::Begin("vct (F1 hides)")) {

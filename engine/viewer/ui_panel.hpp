@@ -18,6 +18,7 @@ struct PanelInputs {
     const CameraController& camera;
     const gl::ContextInfo& context;
     int windowWidth = 0, windowHeight = 0;
+    bool idle = false;  // this frame ran no pass: the viewer waits for input instead of redrawing
 };
 
 struct PanelEdits {

@@ -50,7 +50,7 @@ public:
           context_(openWindow(scene, options)),
           window_(context_->window()),
           input_(window_),
-          imgui_(window_),
+          imgui_(window_, script_.has_value()),
           controller_(startCamera, glm::length(scene.worldBounds.size())) {
         glfwSwapInterval(script_ ? 0 : 1);  // a script runs as fast as it can
         state_.settings = settings;
@@ -248,7 +248,7 @@ private:
         imgui_.beginFrame();
         if (state_.panelVisible) {
             const PanelEdits edits =
-                panel_.draw(state_, {scene_, *renderer_, stats_, controller_, context_->info(), width, height});
+                panel_.draw(state_, {scene_, *renderer_, stats_, controller_, context_->info(), width, height, idle_});
             settingsDirty_ |= edits.settings;
             lightsDirty_ |= edits.lights;
             if (state_.cameraPreset >= 0) {
