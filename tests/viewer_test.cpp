@@ -195,7 +195,8 @@ TEST(Viewer, ScriptedSessionOnCornell) {
     EXPECT_EQ(resized.height, 150);
     EXPECT_GT(meanLuminance(resized, whole(resized)), 20.0);
 
-    std::printf("[ viewer   ] panel diff %.1f; ceiling %.1f with GI, %.1f without; raw-node diff %.2f; voxel diff %.1f; "
-                "direct/albedo diff %.1f\n",
-                panelDifference, ceilingOn, ceilingOff, rawDifference, voxelDifference, directAlbedo);
+    std::printf("[ viewer   ] panel diff %.1f; ceiling %.1f with GI, %.1f without, %.1f without photons; raw-node diff %.2f; "
+                "voxel diff %.1f; direct/albedo diff %.1f\n",
+                panelDifference, ceilingOn, ceilingOff, meanLuminance(photonsOff, ceiling), rawDifference, voxelDifference,
+                directAlbedo);
 }
