@@ -12,7 +12,7 @@ RadianceFilter::RadianceFilter()
       leaf_(gl::buildProgram({{GL_COMPUTE_SHADER, "bricks_leaf.comp"}}, {"RADIANCE 1", "WORK_LIST_TOUCHED 1"})),
       parent_(gl::buildProgram({{GL_COMPUTE_SHADER, "bricks_mip.comp"}}, {"WORK_LIST_TOUCHED 1"})),
       touchBorder_(gl::buildProgram({{GL_COMPUTE_SHADER, "touch_border.comp"}})),
-      completion_({"WORK_LIST_BORDER 1"}) {}
+      completion_({"WORK_LIST_BORDER 1", "POOL_RGBA32F 1"}) {}
 
 void RadianceFilter::mip(const Octree& octree, RadianceVolume& volume) {
     for (int level = octree.levels - 1; level >= 0; --level) {

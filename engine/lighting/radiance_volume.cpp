@@ -23,7 +23,7 @@ void allocateRadianceVolume(const Octree& octree, RadianceVolume& v) {
     for (int level = 0; level < octree.levels; ++level) v.partial.push_back(createPartialBricks(octree, level));
     v.brickRadiance = gl::createTexture(GL_TEXTURE_3D, "brick pool radiance");
     const glm::ivec3 size = 3 * octree.brickPoolBricks;
-    glTextureStorage3D(v.brickRadiance.id(), 1, GL_RGBA16F, size.x, size.y, size.z);
+    glTextureStorage3D(v.brickRadiance.id(), 1, GL_RGBA32F, size.x, size.y, size.z);
     for (GLenum wrap : {GL_TEXTURE_WRAP_S, GL_TEXTURE_WRAP_T, GL_TEXTURE_WRAP_R})
         glTextureParameteri(v.brickRadiance.id(), wrap, GL_CLAMP_TO_EDGE);
     glTextureParameteri(v.brickRadiance.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
@@ -36,7 +36,8 @@ std::size_t RadianceVolume::bytes(const Octree& octree) const {
     std::size_t partialBytes = 0;
     for (int l = 0; l < octree.levels; ++l) partialBytes += std::size_t(octree.levelCount[l]) * 27 * 16;
     return std::size_t(octree.cellCount()) * (24 + 16) + std::size_t(octree.totalCount) * 8 +
-           std::size_t(octree.nodeCount) * (8 + 16) + partialBytes + octree.brickPoolBytes();
+           std::size_t(octree.nodeCount) * (8 + 16) + partialBytes +
+           std::size_t(octree.brickPoolBricks.x) * octree.brickPoolBricks.y * octree.brickPoolBricks.z * 27 * 16;
 }
 
 RadianceStatistics readRadianceStatistics(const Octree& octree, const RadianceVolume& v) {

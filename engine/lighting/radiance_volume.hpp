@@ -27,7 +27,10 @@ struct RadianceVolume {
     gl::Buffer indirectArgs;  // dispatch arguments, 3 uints per slot
 
     std::vector<PartialBricks> partial;  // per level 0..L−1
-    gl::Texture brickRadiance;           // RGBA16F, same layout as Octree::brickAlbedo
+    // RGBA32F, same layout as Octree::brickAlbedo. Not half floats: radiance follows the lights
+    // over 12 decades (1e-6 .. 1e6 W/sr) and half floats would flush dim light to 0 and turn
+    // bright light into Inf (and the image into NaN).
+    gl::Texture brickRadiance;
     gl::Buffer rawRadiance;              // vec4 per node: mean over its cells
 
     float fluxScale = 0.0f;  // fixed-point units per watt

@@ -59,7 +59,9 @@ void BrickCompletion::prepare(const Octree& octree, const PartialBricks& partial
     setBrickPoolUniforms(p, octree);
     gl::setUniform(p, "uLevel", partial.level);
     glBindImageTexture(0, partial.texture.id(), 0, GL_FALSE, 0, GL_READ_ONLY, GL_RGBA32F);
-    glBindImageTexture(1, pool, 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_RGBA16F);
+    GLint format = GL_RGBA16F;  // the albedo pool; the radiance pool is RGBA32F (POOL_RGBA32F variant)
+    glGetTextureLevelParameteriv(pool, 0, GL_TEXTURE_INTERNAL_FORMAT, &format);
+    glBindImageTexture(1, pool, 0, GL_TRUE, 0, GL_WRITE_ONLY, GLenum(format));
 }
 
 void BrickCompletion::run(const Octree& octree, const PartialBricks& partial, GLuint pool) {
