@@ -43,6 +43,11 @@ FrameInput LiveInput::collect() {
 
 void LiveInput::onKey(GLFWwindow*, int key, int, int action, int mods) {
     if (!instance || action == GLFW_RELEASE || instance->uiKeyboard_) return;
+    if (action == GLFW_REPEAT) {
+        // Auto-repeat steps through octree levels; it must not flicker a toggle held a bit long.
+        const Action repeated = actionFor({key, mods});
+        if (repeated != Action::CoarserLevel && repeated != Action::FinerLevel) return;
+    }
     instance->pending_.presses.push_back({key, mods});
 }
 
