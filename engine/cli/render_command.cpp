@@ -3,6 +3,7 @@
 #include <filesystem>
 
 #include "cli/commands.hpp"
+#include "cli/render_options.hpp"
 #include "cli/scene_options.hpp"
 #include "core/error.hpp"
 #include "core/image.hpp"
@@ -20,25 +21,13 @@ struct RenderOptions {
     std::string hdrOut;
     std::string timingsOut;
     std::string backend = "osmesa";
-    std::string aov = "final";
-    std::string toneCurve = "aces";
-    std::optional<double> exposureEV;
     int width = 1280;
     int height = 720;
-    int lightViewResolution = 2048;
-    int pcfRadius = 1;
     int frames = 1;
-    std::string view = "lit";
-    int voxelLevels = 8;
-    int voxelViewLevel = 0;
-    bool noBricks = false;
     bool fullFrames = false;
     std::string lightPath;
     std::string cameraPath;
-    std::string gi = "on";
-    bool noPhotons = false;
-    ConeSettings cones;
-    float giScale = 1.0f;
+    RenderSettingsOptions render;  // shared with `vct view`
 };
 
 // The lights turned by `turn` (0..1 of a full circle) around the vertical axis through the scene's
@@ -63,34 +52,20 @@ void run(const RenderOptions& o) {
     if (!o.hdrOut.empty()) ensureWritable(o.hdrOut);
     if (!o.timingsOut.empty()) ensureWritable(o.timingsOut);
     const auto backend = gl::parseBackend(o.backend);
-    RenderSettings settings;
-    settings.width = o.width;
-    settings.height = o.height;
-    settings.lightViewResolution = o.lightViewResolution;
-    settings.pcfRadius = o.pcfRadius;
-    settings.display.aov = parseAov(o.aov);
-    settings.display.toneCurve = parseToneCurve(o.toneCurve);
-    settings.view = parseViewMode(o.view);
-    settings.voxelLevels = o.voxelLevels;
-    settings.voxelViewLevel = o.voxelViewLevel;
-    settings.bricks = !o.noBricks;
-    settings.fullFrames = o.fullFrames;
     if (!o.lightPath.empty() && o.lightPath != "orbit")
         fail("unknown --light-path '", o.lightPath, "'; the only path is orbit");
     if (!o.cameraPath.empty() && o.cameraPath != "orbit")
         fail("unknown --camera-path '", o.cameraPath, "'; the only path is orbit");
-    if (o.gi != "on" && o.gi != "off") fail("--gi must be on or off, not '", o.gi, "'");
-    settings.gi = o.gi == "on";
-    settings.photons = !o.noPhotons;
-    settings.cones = o.cones;
-    settings.display.giScale = o.giScale;
     if (o.width < 1 || o.height < 1 || o.width > 16384 || o.height > 16384)
         fail("image size ", o.width, "x", o.height, " is out of range; --width and --height must be within 1..16384");
+    renderSettingsFromOptions(o.render, Scene{});  // bad names fail here, before the scene loads
 
     const Scene scene = loadSceneFromOptions(o.scene);
     const Camera camera = cameraFromOptions(o.scene, scene);
-    settings.display.exposureEV = o.exposureEV.value_or(scene.exposureEV);
-    if (!std::isfinite(settings.display.exposureEV)) fail("--exposure must be a finite number of stops");
+    RenderSettings settings = renderSettingsFromOptions(o.render, scene);
+    settings.width = o.width;
+    settings.height = o.height;
+    settings.fullFrames = o.fullFrames;
 
     auto context = gl::createContext(backend);
     Renderer renderer(scene, settings);
@@ -141,37 +116,9 @@ Run addRenderCommand(CLI::App& app) {
         ->capture_default_str();
     command->add_option("--width", o.width, "image width in pixels")->capture_default_str();
     command->add_option("--height", o.height, "image height in pixels")->capture_default_str();
-    command->add_option("--aov", o.aov, "output buffer: final, direct, albedo, normal, depth")->capture_default_str();
-    command->add_option("--exposure", o.exposureEV, "exposure in stops (EV); default: the scene's");
-    command->add_option("--tonemap", o.toneCurve, "tone curve: aces, reinhard, clamp")->capture_default_str();
-    command->add_option("--light-view-res", o.lightViewResolution, "light-view (shadow) map texels per side")
-        ->capture_default_str();
-    command->add_option("--pcf-radius", o.pcfRadius, "shadow filter radius in texels (0 = one tap)")
-        ->capture_default_str();
     command->add_option("--frames", o.frames, "render this many frames; timings are the last frame's")
         ->capture_default_str();
-    command->add_option("--view", o.view,
-                        "lit (the lit image), voxels (the octree's albedo) or radiance (the octree's radiance)")
-        ->capture_default_str();
-    command->add_option("--gi", o.gi, "indirect light by cone tracing: on or off")->capture_default_str();
-    command->add_flag("--no-photons", o.noPhotons, "inject no light (cones then see only emission; AO stays)");
-    command->add_option("--cones", o.cones.cones, "diffuse cone set: 1, 5, 6, 9 or 16 cones")->capture_default_str();
-    command->add_option("--cone-aperture", o.cones.apertureScale, "factor on the derived cone apertures (tan)")
-        ->capture_default_str();
-    command->add_option("--cone-step", o.cones.step, "cone step length as a fraction of its diameter")
-        ->capture_default_str();
-    command->add_option("--cone-offset", o.cones.offset, "cone start offset along the normal, in voxels")
-        ->capture_default_str();
-    command->add_option("--cone-lift", o.cones.lift,
-                        "extra offset along the normal per unit of cone diameter (against self-illumination)")
-        ->capture_default_str();
-    command->add_option("--gi-scale", o.giScale, "artistic factor on indirect light (1 = physically consistent)")
-        ->capture_default_str();
-    command->add_option("--voxel-levels", o.voxelLevels, "octree resolution 2^L voxels per axis, L in 5..10")
-        ->capture_default_str();
-    command->add_option("--voxel-level", o.voxelViewLevel,
-                        "octree level shown by --view voxels (1..L; default L, the voxels themselves)");
-    command->add_flag("--no-bricks", o.noBricks, "raw node values instead of filtered bricks (cones and voxel views)");
+    addRenderSettingsOptions(*command, o.render);
     command->add_flag("--full-frames", o.fullFrames,
                       "run every pass every frame, as if the geometry changed (benchmarks: with --frames 2 a "
                       "warm full frame is timed); otherwise a frame re-runs only what changed");
