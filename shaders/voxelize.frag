@@ -81,12 +81,16 @@ void main() {
     // texture footprint of one voxel for mip selection.
     vec2 e1 = gTri1.xy - gTri0.xy, e2 = gTri2.xy - gTri0.xy;
     float det = e1.x * e2.y - e1.y * e2.x;
+    // A degenerate triangle (segment or point, see voxelize.geom) has no barycentric frame: it
+    // takes its first vertex's attributes.
+    float invDet = abs(det) > 1e-30 ? 1.0 / det : 0.0;
     vec2 r = polygonCentre - gTri0.xy;
-    float s = (r.x * e2.y - r.y * e2.x) / det;
-    float t = (e1.x * r.y - e1.y * r.x) / det;
+    // Inside the triangle by construction; clamped against rounding in needle-thin triangles.
+    float s = clamp((r.x * e2.y - r.y * e2.x) * invDet, 0.0, 1.0);
+    float t = clamp((e1.x * r.y - e1.y * r.x) * invDet, 0.0, 1.0 - s);
     vec2 uv = gUv0 + s * (gUv1 - gUv0) + t * (gUv2 - gUv0);
-    vec2 dUvdx = (e2.y * (gUv1 - gUv0) - e1.y * (gUv2 - gUv0)) / det;
-    vec2 dUvdy = (-e2.x * (gUv1 - gUv0) + e1.x * (gUv2 - gUv0)) / det;
+    vec2 dUvdx = (e2.y * (gUv1 - gUv0) - e1.y * (gUv2 - gUv0)) * invDet;
+    vec2 dUvdy = (-e2.x * (gUv1 - gUv0) + e1.x * (gUv2 - gUv0)) * invDet;
     vec4 base = materialTextureGrad(uv, dUvdx, dUvdy);
     if (materialCutsAway(base.a)) discard;
     vec3 normal = gN0 + s * (gN1 - gN0) + t * (gN2 - gN0);

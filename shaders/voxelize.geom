@@ -56,16 +56,23 @@ void emit(vec2 uv) {
 }
 
 void main() {
+    for (int i = 0; i < 3; ++i)
+        if (any(isnan(vVoxel[i])) || any(isinf(vVoxel[i]))) return;  // the loader refuses these
     vec3 n = cross(vVoxel[1] - vVoxel[0], vVoxel[2] - vVoxel[0]);
     vec3 an = abs(n);
     int axis = (an.x >= an.y && an.x >= an.z) ? 0 : (an.y >= an.z ? 1 : 2);
     float dominant = an[axis];
-    if (!(dominant > 0.0)) return;  // zero area (the loader removes these; guard against NaN too)
+    // Zero area in float voxel space: a segment or a point (a sliver thinner than float precision,
+    // or a sub-voxel triangle far from the origin; exactly degenerate ones the loader leaves out).
+    // It still touches cells: voxelized as that segment or point, with no area, through the
+    // bounding rectangle (the fragment stage's exact clipping handles degenerate polygons).
+    bool degenerate = !(dominant > 0.0);
+    if (degenerate) axis = 2;
 
     vec3 q[3] = vec3[3](project(vVoxel[0], axis), project(vVoxel[1], axis), project(vVoxel[2], axis));
     tri = q;
     triAxis = axis;
-    triAreaScale = length(n) / dominant;
+    triAreaScale = degenerate ? 0.0 : length(n) / dominant;
 
     // Counter-clockwise order in 2D so that edge normals point outwards.
     float orientation = (q[1].x - q[0].x) * (q[2].y - q[0].y) - (q[1].y - q[0].y) * (q[2].x - q[0].x);
@@ -80,8 +87,8 @@ void main() {
     // the fragment stage clips exactly.
     const float margin = 1.0 / 32.0;
     vec2 expanded[3];
-    bool wellShaped = true;
-    for (int i = 0; i < 3; ++i) {
+    bool wellShaped = !degenerate;
+    for (int i = 0; i < 3 && wellShaped; ++i) {
         vec2 a = q[(i + 2) % 3].xy, b = q[i].xy, c = q[(i + 1) % 3].xy;
         vec2 e0 = b - a, e1 = c - b;
         vec2 n0 = normalize(vec2(e0.y, -e0.x)), n1 = normalize(vec2(e1.y, -e1.x));
