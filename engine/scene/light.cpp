@@ -1,5 +1,6 @@
 #include "scene/light.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <iomanip>
 #include <sstream>
@@ -8,6 +9,20 @@
 #include "core/vector_text.hpp"
 
 namespace vct {
+namespace {
+// The shaders work in float: a quantity far outside float's range would reach them as 0 or Inf
+// (and the image as NaN). kMinLightQuantity..kMaxLightQuantity leaves room for 1/d² and the
+// albedo (light.hpp).
+void checkLightRange(double quantity, const glm::dvec3& color, const std::string& what, const char* kind,
+                     const char* name, const char* unit) {
+    const double tinted = quantity * std::max({color.x, color.y, color.z});
+    if (tinted < kMinLightQuantity || tinted > kMaxLightQuantity)
+        fail(what, " (", kind, "): ", name, " ", quantity, " ", unit, " × colour ", toText(color), " = ", tinted,
+             " is outside the supported range ", kMinLightQuantity, "..", kMaxLightQuantity, " ", unit,
+             "; rescale the scene's lights (and the exposure)");
+}
+}  // namespace
+
 void validateLight(const Light& light, const std::string& what) {
     const bool spot = light.type == LightType::Spot;
     const char* kind = spot ? "spot light" : "directional light";
@@ -29,6 +44,7 @@ void validateLight(const Light& light, const std::string& what) {
             fail(what, " (directional light): irradiance ", light.irradiance,
                  " W/m² must be a positive finite number (bright daylight is ~1000 W/m²; "
                  "scenes here use 1-20 with a matching exposure)");
+        checkLightRange(light.irradiance, light.color, what, "directional light", "irradiance", "W/m²");
         return;
     }
     if (!isFinite(light.position))
@@ -36,6 +52,7 @@ void validateLight(const Light& light, const std::string& what) {
     if (!std::isfinite(light.intensity) || light.intensity <= 0.0)
         fail(what, " (spot light): intensity ", light.intensity,
              " W/sr must be a positive finite number");
+    checkLightRange(light.intensity, light.color, what, "spot light", "intensity", "W/sr");
     if (!std::isfinite(light.innerAngleDeg) || !std::isfinite(light.outerAngleDeg))
         fail(what, " (spot light): cone angles inner ", light.innerAngleDeg, "°, outer ",
              light.outerAngleDeg, "° must be finite");

@@ -38,8 +38,13 @@ inline double spotFalloff(double cosAngle, double innerAngleDeg, double outerAng
     return t * t * (3.0 - 2.0 * t);
 }
 
-// Throws vct::Error naming the light and the bad parameter (non-finite, non-positive, zero
-// direction, inner > outer, outer ≥ 90°).
+// Irradiance (W/m²) or intensity (W/sr) times the largest colour component must lie in this
+// range: the GPU computes in float (1e-38..3e38), and E = I/d² and ρ/π·E must stay inside it.
+constexpr double kMinLightQuantity = 1e-20;
+constexpr double kMaxLightQuantity = 1e20;
+
+// Throws vct::Error naming the light and the bad parameter (non-finite, non-positive, outside
+// kMinLightQuantity..kMaxLightQuantity, zero direction, inner > outer, outer ≥ 90°).
 void validateLight(const Light& light, const std::string& what);
 
 std::string describe(const Light& light);
