@@ -149,3 +149,22 @@ TEST(StressDegenerate, LoaderCountsAndReportsZeroAreaTriangles) {
     std::printf("[ degenerate] loader: 7 triangles, %zu zero-area left out and reported, %zu kept\n",
                 scene.report.degenerateTriangles, scene.triangleCount());
 }
+
+TEST(StressDegenerate, ModelThatVoxelizesToNothingRendersBlack) {
+    // Every texel cut away by the alpha mask: no fragment, an octree without a single voxel. This
+    // ended in "OpenGL error GL_INVALID_VALUE ... (an engine bug)" (zero-sized buffers).
+    Scene scene = makeTriangleScene({{0, 0, 0}, {1, 0, 0}, {0, 0, 1}}, Bounds{glm::dvec3(0.0), glm::dvec3(1.0)});
+    scene.materials[0].alphaMode = AlphaMode::Mask;
+    scene.materials[0].baseAlpha = 0.0f;
+    scene.lights = {Light{}};
+    Camera camera;
+    camera.eye = {0.3, 2.0, 0.3};
+    camera.target = {0.3, 0.0, 0.31};
+    auto context = gl::createContext(gl::Backend::OSMesa);
+    Renderer renderer(scene, smallSettings(32, 24, 5, 256));
+    renderer.renderFrame(camera);
+    EXPECT_EQ(renderer.octree()->octree().cellCount(), 0u);
+    const ImageF image = renderer.readHdr();
+    EXPECT_EQ(countNonFinite(image.rgba), 0u);
+    EXPECT_EQ(maxRgb(image), 0.0);
+}

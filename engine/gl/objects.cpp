@@ -15,7 +15,10 @@ Buffer createBuffer(GLsizeiptr bytes, const void* data, GLbitfield storageFlags,
     GLuint id = 0;
     glCreateBuffers(1, &id);
     Buffer buffer(id);
-    glNamedBufferStorage(id, bytes > 0 ? bytes : 1, data, storageFlags);
+    // An empty buffer (e.g. the cells of an octree that nothing voxelized into) still gets the
+    // size of the largest element vct clears or binds (RGBA32F): GL refuses size 0, and a 1-byte
+    // store made glClearNamedBufferData fail with GL_INVALID_VALUE.
+    glNamedBufferStorage(id, bytes > 0 ? bytes : 16, bytes > 0 ? data : nullptr, storageFlags);
     label(GL_BUFFER, id, text);
     checkErrors(concat("allocating buffer '", text ? text : "", "' (", bytes, " bytes)"));
     return buffer;
