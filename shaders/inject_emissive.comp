@@ -6,12 +6,11 @@ layout(local_size_x = 64) in;
 #include "octree.glsl"
 #include "radiance_common.glsl"
 
-layout(std430, binding = 11) buffer CellEmissive { uvec2 cellEmissive[]; };
+layout(std430, binding = 11) buffer CellEmissive { vec4 cellEmissive[]; };
 
 void main() {
     uint cell = linearInvocation();
     if (cell >= uLevelCount[uLevels]) return;
-    uvec2 e = cellEmissive[cell];
-    vec3 emission = vec3(unpackHalf2x16(e.x), unpackHalf2x16(e.y).x);
+    vec3 emission = cellEmissive[cell].rgb;
     if (any(greaterThan(emission, vec3(0.0)))) touch(uLevelStart[uLevels] + cell, uLevels);
 }

@@ -13,7 +13,7 @@ layout(local_size_x = 64) in;
 
 layout(std430, binding = 7) buffer CellAlbedo { uint cellAlbedo[]; };
 layout(std430, binding = 9) buffer CellArea { float cellArea[]; };
-layout(std430, binding = 11) buffer CellEmissive { uvec2 cellEmissive[]; };
+layout(std430, binding = 11) buffer CellEmissive { vec4 cellEmissive[]; };
 
 uniform float uFluxScale;
 uniform float uVoxelArea;   // one voxel face in scene units²
@@ -33,8 +33,7 @@ void main() {
     float area = cellArea[cell] * uVoxelArea;
     vec3 radiance = area > 0.0 ? flux / (3.14159265358979 * area) : vec3(0.0);
     if (uHasEmissive != 0) {
-        uvec2 e = cellEmissive[cell];
-        radiance += vec3(unpackHalf2x16(e.x), unpackHalf2x16(e.y).x);
+        radiance += cellEmissive[cell].rgb;
     }
     float tau = opticalDepth(unpackUnorm4x8(cellAlbedo[cell]).a);
     cellRadiance[cell] = vec4(radiance * tau, tau);

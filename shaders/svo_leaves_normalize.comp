@@ -11,7 +11,9 @@ layout(std430, binding = 7) buffer CellAlbedo { uint cellAlbedo[]; };    // RGBA
 layout(std430, binding = 8) buffer CellNormal { uint cellNormal[]; };    // octahedral
 layout(std430, binding = 9) buffer CellArea { float cellArea[]; };       // voxel-face units
 layout(std430, binding = 10) buffer CellFragments { uint cellFragments[]; };
-layout(std430, binding = 11) buffer CellEmissive { uvec2 cellEmissive[]; };  // half RGB
+// Float, not half: emission may be anything from 1e-9 to 1e9 W/(m²·sr) (half floats flushed dim
+// emission to 0 and turned bright emission into Inf).
+layout(std430, binding = 11) buffer CellEmissive { vec4 cellEmissive[]; };  // RGB, 0
 
 uniform int uHasEmissive;
 uniform float uEmissiveScale;
@@ -44,6 +46,6 @@ void main() {
     if (uHasEmissive != 0) {
         vec3 emission = vec3(float(load64(base + 9)), float(load64(base + 11)), float(load64(base + 13))) /
                         (uEmissiveScale * n);
-        cellEmissive[cell] = uvec2(packHalf2x16(emission.rg), packHalf2x16(vec2(emission.b, 0.0)));
+        cellEmissive[cell] = vec4(emission, 0.0);
     }
 }

@@ -11,7 +11,7 @@ GBuffer::GBuffer(int width, int height)
       albedo_(gl::createTexture2D(GL_RGBA16F, width, height, 1, "gbuffer albedo")),
       normal_(gl::createTexture2D(GL_RGBA16F, width, height, 1, "gbuffer normal")),
       position_(gl::createTexture2D(GL_RGBA32F, width, height, 1, "gbuffer position")),
-      emissive_(gl::createTexture2D(GL_RGBA16F, width, height, 1, "gbuffer emissive")),
+      emissive_(gl::createTexture2D(GL_RGBA32F, width, height, 1, "gbuffer emissive")),
       depth_(gl::createTexture2D(GL_DEPTH_COMPONENT32F, width, height, 1, "gbuffer depth")),
       framebuffer_(gl::createFramebuffer("gbuffer")),
       program_(gl::buildProgram({{GL_VERTEX_SHADER, "scene.vert"}, {GL_FRAGMENT_SHADER, "gbuffer.frag"}})) {
@@ -27,7 +27,7 @@ GBuffer::GBuffer(int width, int height)
         fail("the G-buffer framebuffer is incomplete on this driver (", width, "x", height, ")");
 }
 
-std::size_t GBuffer::bytes() const { return std::size_t(width_) * height_ * (8 + 8 + 16 + 8 + 4); }
+std::size_t GBuffer::bytes() const { return std::size_t(width_) * height_ * (8 + 8 + 16 + 16 + 4); }
 
 void GBuffer::render(const GpuScene& scene, const ViewTransform& camera) {
     glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_.id());

@@ -15,7 +15,7 @@ public:
     GLuint albedo() const { return albedo_.id(); }      // RGBA16F linear albedo
     GLuint normal() const { return normal_.id(); }      // RGBA16F unit normal facing the camera
     GLuint position() const { return position_.id(); }  // RGBA32F scene-local position, w=0 sky
-    GLuint emissive() const { return emissive_.id(); }  // RGBA16F emitted radiance
+    GLuint emissive() const { return emissive_.id(); }  // RGBA32F emitted radiance (any intensity)
     int width() const { return width_; }
     int height() const { return height_; }
     std::size_t bytes() const;

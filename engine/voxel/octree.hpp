@@ -40,7 +40,7 @@ struct Octree {
     gl::Buffer neighbours;  // 6 per node, nodeCount nodes
 
     // Cells (level L), levelCount[L] entries each: albedo+opacity RGBA8, normal oct16, area in
-    // voxel-face units, fragment count, emission half RGB (only with emissive materials).
+    // voxel-face units, fragment count, emission float RGB(A) (only with emissive materials).
     gl::Buffer cellAlbedo, cellNormal, cellArea, cellFragments, cellEmissive;
     bool hasEmissive = false;
 
@@ -52,7 +52,7 @@ struct Octree {
     std::uint32_t cellCount() const { return levelCount[levels]; }
     std::size_t nodePoolBytes() const { return std::size_t(totalCount) * 16; }
     std::size_t neighbourBytes() const { return std::size_t(nodeCount) * 24; }
-    std::size_t cellBytes() const { return std::size_t(cellCount()) * (16 + (hasEmissive ? 8 : 0)); }
+    std::size_t cellBytes() const { return std::size_t(cellCount()) * (16 + (hasEmissive ? 16 : 0)); }
     std::size_t brickPoolBytes() const;
     // A dense RGBA16F 3D texture of the same resolution with its full mip chain (for comparison).
     std::size_t denseTextureBytes() const;

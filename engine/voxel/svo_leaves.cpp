@@ -52,7 +52,7 @@ LeafStatistics SvoLeaves::run(const FragmentList& fragments, GLuint fragmentNode
     octree.cellNormal = gl::createBuffer(bytes, nullptr, 0, "cell normal");
     octree.cellArea = gl::createBuffer(bytes, nullptr, 0, "cell area");
     octree.cellFragments = gl::createBuffer(bytes, nullptr, 0, "cell fragments");
-    if (emissive) octree.cellEmissive = gl::createBuffer(bytes * 2, nullptr, 0, "cell emission");
+    if (emissive) octree.cellEmissive = gl::createBuffer(bytes * 4, nullptr, 0, "cell emission");
     else octree.cellEmissive.reset();
     gl::Buffer status = gl::createBuffer(8, nullptr, GL_DYNAMIC_STORAGE_BIT, "leaf status");
     const std::uint32_t zeros[2] = {0, 0};
