@@ -8,12 +8,12 @@ layout(local_size_x = 8, local_size_y = 8) in;
 #include "radiance_common.glsl"
 
 layout(binding = 0) uniform sampler2D uLightPosition;  // scene-local, w = 0: no surface
-layout(binding = 1) uniform sampler2D uLightFlux;      // reflected flux per texel, W
+layout(binding = 1) uniform sampler2D uLightFlux;      // reflected flux per texel / the light's largest
 layout(std430, binding = 9) buffer CellArea { float cellArea[]; };
 
 uniform vec3 uVoxelOrigin;  // scene-local position of voxel (0,0,0)
 uniform float uVoxelScale;  // voxels per scene-local unit
-uniform float uFluxScale;   // fixed-point units per watt
+uniform float uUnitsPerRelativeFlux;  // fixed-point units of this light's largest texel flux (≤ 2^24)
 
 void main() {
     ivec2 texel = ivec2(gl_GlobalInvocationID.xy);
@@ -54,7 +54,7 @@ void main() {
         share = a + b > 0.0 ? a / (a + b) : 0.5;
     }
     // Clamped so that even an albedo far above 1 (a broken material) cannot wrap a word.
-    vec3 units = min(flux * uFluxScale, vec3(2147483648.0));
+    vec3 units = min(flux * uUnitsPerRelativeFlux, vec3(2147483648.0));
     uint index = (node - uLevelStart[uLevels]) * 6u;
     for (uint c = 0u; c < 3u; ++c) accumulate64(index + 2u * c, uint(round(units[c] * share)));
     touch(node, uLevels);

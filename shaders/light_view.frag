@@ -9,11 +9,11 @@ in vec3 vNormal;
 in vec2 vUv;
 
 uniform LightParams uLight;
-uniform float uTexelFootprint;  // m² (directional) or sr at the axis (spot)
+uniform float uInverseQuantity;  // 1 / (E or I × the colour's largest component)
 
 layout(location = 0) out vec4 outPosition;  // scene-local, 1
 layout(location = 1) out vec4 outNormal;    // facing the light
-layout(location = 2) out vec4 outFlux;      // reflected flux ρ·Φ of this texel, W
+layout(location = 2) out vec4 outFlux;      // reflected flux ρ·Φ of this texel / the light's largest texel flux
 
 void main() {
     vec4 base = materialBaseColor(vUv);
@@ -21,14 +21,14 @@ void main() {
     float distanceToLight;
     vec3 incident = incidentIrradiance(uLight, vPosition, toLight, distanceToLight);
     // Flux through one texel: E·A for a parallel beam (a tilted surface covers more area but
-    // receives E·cosθ, so the texel's flux does not depend on θ); I·ω for a spot, where the
-    // texel's solid angle shrinks as cos³ away from the axis and E already holds 1/d².
-    vec3 flux;
-    if (uLight.type == LIGHT_DIRECTIONAL) {
-        flux = incident * uTexelFootprint;
-    } else {
+    // receives E·cosθ, so the texel's flux does not depend on θ); I·falloff·ω for a spot, where
+    // the texel's solid angle shrinks as cos³ away from the axis. Stored relative to the light's
+    // largest texel flux (E or I × colour × footprint, LightViewMap::maxTexelFlux), computed
+    // without the light's magnitude so that nothing overflows or underflows float.
+    vec3 flux = uLight.radiometric * uInverseQuantity;  // the tint, largest component 1
+    if (uLight.type != LIGHT_DIRECTIONAL) {
         float cosAxis = max(dot(-toLight, uLight.direction), 0.0);
-        flux = incident * distanceToLight * distanceToLight * uTexelFootprint * cosAxis * cosAxis * cosAxis;
+        flux *= spotFalloff(cosAxis, uLight.cosInner, uLight.cosOuter) * cosAxis * cosAxis * cosAxis;
     }
     outPosition = vec4(vPosition, 1.0);
     outNormal = vec4(facingNormal(vNormal, vPosition, toLight), 0.0);

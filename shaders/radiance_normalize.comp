@@ -15,8 +15,7 @@ layout(std430, binding = 7) buffer CellAlbedo { uint cellAlbedo[]; };
 layout(std430, binding = 9) buffer CellArea { float cellArea[]; };
 layout(std430, binding = 11) buffer CellEmissive { vec4 cellEmissive[]; };
 
-uniform float uFluxScale;
-uniform float uVoxelArea;   // one voxel face in scene units²
+uniform double uRadiancePerUnit;  // watts of one fixed-point unit / (π · one voxel face in scene units²)
 uniform int uHasEmissive;
 
 void main() {
@@ -24,14 +23,16 @@ void main() {
     uint node = workNode(valid);
     if (!valid) return;
     uint cell = node - uLevelStart[uLevels];
-    vec3 flux;
-    for (uint c = 0u; c < 3u; ++c) {
-        uint index = cell * 6u + 2u * c;
-        flux[c] = float((double(radianceAccumulator[index]) + 4294967296.0lf * double(radianceAccumulator[index + 1u])) /
-                        double(uFluxScale));
-    }
-    float area = cellArea[cell] * uVoxelArea;
-    vec3 radiance = area > 0.0 ? flux / (3.14159265358979 * area) : vec3(0.0);
+    // In double until the radiance itself: the watts of a texel can exceed float's range (a 1e20
+    // W/m² sun over a 1e18 m scene) while the radiance ρ/π·E cannot.
+    vec3 radiance = vec3(0.0);
+    double area = double(cellArea[cell]);
+    if (area > 0.0lf)
+        for (uint c = 0u; c < 3u; ++c) {
+            uint index = cell * 6u + 2u * c;
+            double units = double(radianceAccumulator[index]) + 4294967296.0lf * double(radianceAccumulator[index + 1u]);
+            radiance[c] = float(units * uRadiancePerUnit / area);
+        }
     if (uHasEmissive != 0) {
         radiance += cellEmissive[cell].rgb;
     }

@@ -21,8 +21,12 @@ private:
     ListDispatch listDispatch_;
 };
 
-// Fixed-point scale: the largest possible reflected flux of one texel maps to 2^24, so any sum of
-// up to 2^40 texels fits the 64-bit accumulators (overflow impossible by construction).
-float fluxFixedPointScale(const std::vector<Light>& lights, const std::vector<LightViewMap>& lightViews);
+// Fixed point, chosen automatically from the lights: the largest possible texel flux of the
+// brightest light (LightViewMap::maxTexelFlux) is 2^24 units; this returns the watts of one unit.
+// Every light's texels are converted to these units (a dimmer light's texels get fewer), each
+// texel adds at most 2^31 units (clamped: albedo > 128), and vct refuses more than 2^33 light-view
+// texels in all, so no 64-bit sum can overflow: never wrapped, by construction. Computed in
+// double, so any light in kMinLightQuantity..kMaxLightQuantity over any scene size works.
+double fluxWattsPerUnit(const std::vector<Light>& lights, const std::vector<LightViewMap>& lightViews);
 
 }  // namespace vct

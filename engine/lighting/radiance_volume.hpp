@@ -33,7 +33,7 @@ struct RadianceVolume {
     gl::Texture brickRadiance;
     gl::Buffer rawRadiance;              // vec4 per node: mean over its cells
 
-    float fluxScale = 0.0f;  // fixed-point units per watt
+    double wattsPerUnit = 0.0;  // fixed point of the photon sums (fluxWattsPerUnit, inject.hpp)
 
     std::size_t bytes(const Octree& octree) const;
 };

@@ -1,5 +1,7 @@
 #include "render/light_view.hpp"
 
+#include <algorithm>
+
 #include "core/error.hpp"
 #include "gl/shader.hpp"
 #include "render/light_uniforms.hpp"
@@ -36,6 +38,11 @@ LightViewMap::LightViewMap(int resolution)
         fail("the light-view framebuffer is incomplete on this driver (", resolution, "²)");
 }
 
+double LightViewMap::maxTexelFlux(const Light& light, const LightViewTransform& transform) {
+    const double quantity = light.type == LightType::Directional ? light.irradiance : light.intensity;
+    return quantity * std::max({light.color.x, light.color.y, light.color.z}) * transform.texelFootprint;
+}
+
 std::size_t LightViewMap::bytes() const { return std::size_t(resolution_) * resolution_ * (4 + 16 + 8 + 16); }
 
 void LightViewMap::render(const GpuScene& gpuScene, const Scene& scene, const Light& light) {
@@ -51,7 +58,9 @@ void LightViewMap::render(const GpuScene& gpuScene, const Scene& scene, const Li
     const GLuint p = program_.id();
     glUseProgram(p);
     gl::setUniform(p, "uViewProjection", transform_.view.viewProjection);
-    gl::setUniform(p, "uTexelFootprint", transform_.texelFootprint);
+    const double quantity = light.type == LightType::Directional ? light.irradiance : light.intensity;
+    gl::setUniform(p, "uInverseQuantity",
+                   float(1.0 / (quantity * std::max({light.color.x, light.color.y, light.color.z}))));
     setLightUniforms(p, light, scene);
     gpuScene.draw(p);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);

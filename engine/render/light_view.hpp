@@ -16,9 +16,12 @@ public:
     GLuint depth() const { return depth_.id(); }        // DEPTH32F, compare mode GL_GEQUAL
     GLuint position() const { return position_.id(); }  // RGBA32F scene-local, w=0 empty
     GLuint normal() const { return normal_.id(); }      // RGBA16F facing the light
-    // RGBA32F reflected flux ρ·Φ in W: a texel carries ~1e-4 of the light's intensity, which
-    // half floats lose for dim lights (underflow) and bright ones (overflow past 65504).
+    // RGBA32F reflected flux ρ·Φ of each texel *relative to* the light's largest texel flux
+    // maxTexelFlux() (so in [0, ρ] whatever the light's units and the scene's size: the watts, up
+    // to 1e20 W/m² × (1e18 m)², would overflow float; half floats lost even 1e-4 W/sr).
     GLuint flux() const { return flux_.id(); }
+    // Watts of a texel of relative flux 1: quantity (E or I) × largest colour component × footprint.
+    static double maxTexelFlux(const Light& light, const LightViewTransform& transform);
     const LightViewTransform& transform() const { return transform_; }
     int resolution() const { return resolution_; }
     std::size_t bytes() const;

@@ -69,7 +69,7 @@ LightViewTransform lightView(const Light& light, const Scene& scene, int resolut
         result.view = finish(view, projection, eye, direction, resolution, resolution);
         const double texel = 2.0 * radius / resolution;
         result.texelWorldSize = float(texel);
-        result.texelFootprint = float(texel * texel);
+        result.texelFootprint = texel * texel;
     } else {
         const glm::dvec3 eye = light.position - scene.origin;
         const double fov = 2.0 * glm::radians(std::min(light.outerAngleDeg, 85.0));
@@ -81,7 +81,7 @@ LightViewTransform lightView(const Light& light, const Scene& scene, int resolut
         result.perspective = true;
         const double edge = 2.0 * std::tan(fov * 0.5) / resolution;  // texel edge on the plane at distance 1
         result.texelWorldSize = float(edge);
-        result.texelFootprint = float(edge * edge);  // solid angle at the axis; the shader applies cos³
+        result.texelFootprint = edge * edge;  // solid angle at the axis; texels off the axis: × cos³
     }
     return result;
 }

@@ -32,7 +32,7 @@ ViewTransform cameraView(const Camera& camera, const Scene& scene, int width, in
 struct LightViewTransform {
     ViewTransform view;
     bool perspective = false;
-    float texelFootprint = 0.0f;
+    double texelFootprint = 0.0;  // double: (scene size / resolution)² leaves float's range for 1e±18 scenes
     float texelWorldSize = 0.0f;  // directional: texel edge in metres; spot: edge at distance 1
 };
 LightViewTransform lightView(const Light& light, const Scene& scene, int resolution);
