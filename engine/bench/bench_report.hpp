@@ -31,6 +31,7 @@ EqualErrorTime pathTracerTimeAt(const std::vector<BenchRow>& rows, double rmse, 
 
 struct BenchSummary {
     std::string name, scene, camera, command, date, renderer, backend, cpu;
+    std::string commit;  // `git describe --always --dirty` of the source tree (shaders are read from it)
     int width = 0, height = 0, repeats = 0, pathTracerThreads = 0;
     double exposureEV = 0.0;
     std::string tonemap;
@@ -40,6 +41,7 @@ struct BenchSummary {
     bool referenceFromCache = false;
     std::string referenceKey;
     std::string defaultSettings;  // "voxel_levels=8, cones=5, …"
+    std::string loadBefore, loadAfter;  // /proc/loadavg (1, 5, 15 min) at the start and the end
 };
 
 // The default point's settings as "name=value, …" over every sweep parameter.

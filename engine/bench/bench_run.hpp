@@ -48,7 +48,7 @@ struct BenchRow {
     bool isDefault = false;
     RenderSettings settings;   // engine rows
     int spp = 0;               // path-tracer rows
-    double frameMs = 0.0;      // engine: fastest warm full frame; path tracer: render time (BVH excluded)
+    double frameMs = 0.0;      // engine: fastest warm full frame; path tracer: fastest render (BVH excluded)
     double frameStaticMs = 0.0;  // engine: fastest static-geometry frame; path tracer: = frameMs
     std::vector<double> frameSamplesMs;  // every timed repeat
     double updateMs = 0.0;     // engine: the frame after setSettings from the default point
@@ -72,7 +72,7 @@ ErrorMetrics measureErrors(const ImageF& final, const ImageF& direct, const Imag
 using Progress = std::function<void(const BenchRow&, std::size_t index, std::size_t count)>;
 
 // The path tracer at each spp of the sweep's curve (seed: the curve's), `threads` as `vct
-// reference --threads`.
+// reference --threads`; each rendered `sweep.repeats` times, the fastest counts (as the engine's).
 std::vector<BenchRow> runPathTracerCurve(const Scene& scene, const Camera& camera, const SweepDefinition& sweep,
                                          const ReferenceImages& reference, const metrics::DisplaySettings& display,
                                          int threads, const Progress& progress = {});

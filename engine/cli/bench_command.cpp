@@ -54,6 +54,26 @@ std::string cpuDescription() {
     return concat(model, ", ", std::thread::hardware_concurrency(), " hardware threads");
 }
 
+std::string loadAverage() {
+    std::ifstream in("/proc/loadavg");
+    std::string one, five, fifteen;
+    if (!(in >> one >> five >> fifteen)) return "";
+    return one + ", " + five + ", " + fifteen;
+}
+
+// The source tree's commit: the shaders are read from it at run time, so it identifies what ran.
+std::string sourceCommit() {
+    const std::string command = "git -C '" + kSourceDir.string() + "' describe --always --dirty 2>/dev/null";
+    std::string text;
+    if (FILE* pipe = popen(command.c_str(), "r")) {
+        char buffer[128];
+        while (std::fgets(buffer, sizeof buffer, pipe)) text += buffer;
+        if (pclose(pipe) != 0) return "";
+    }
+    while (!text.empty() && (text.back() == '\n' || text.back() == '\r')) text.pop_back();
+    return text;
+}
+
 // The path as the command line should show it: relative to the repository when inside it.
 std::string displayPath(const std::filesystem::path& p) {
     std::error_code ec;
@@ -86,6 +106,7 @@ void run(const BenchOptions& o) {
     const auto backend = gl::parseBackend(o.backend);
     const TonemapCurve curve = parseTonemapCurve(sweep.tonemap);
     const auto started = std::chrono::steady_clock::now();
+    const std::string loadBefore = loadAverage();
 
     const Scene scene = loadScene(bench::resolveScenePath(sweep));
     Camera camera = scene.cameras.front();
@@ -169,6 +190,9 @@ void run(const BenchOptions& o) {
     summary.referenceFromCache = ref.fromCache;
     summary.referenceKey = ref.key;
     summary.defaultSettings = bench::describeSettings(points.front().settings);
+    summary.loadBefore = loadBefore;
+    summary.commit = sourceCommit();
+    summary.loadAfter = loadAverage();
 
     bench::writeCsv(csvPath, rows);
     const std::string chartProblem = bench::writeChart(gpPath, pngPath, rows, summary);
@@ -185,7 +209,7 @@ void run(const BenchOptions& o) {
                 const double e = indirect ? r.error.indirectRmse : r.error.rmse;
                 const bench::EqualErrorTime t = bench::pathTracerTimeAt(rows, e, indirect);
                 if (t.valid)
-                    std::printf("equal error (%s): path tracer %.1f ms (%s) = %.2fx the engine frame, %.2fx its "
+                    std::printf("equal error (%s): path tracer %.1f ms (%s) = %.3gx the engine frame, %.3gx its "
                                 "static-geometry frame\n",
                                 indirect ? "indirect part" : "full image", t.ms, t.how.c_str(), t.ms / r.frameMs,
                                 t.ms / r.frameStaticMs);
