@@ -8,12 +8,15 @@
 namespace vct {
 void validateCamera(const Camera& camera) {
     const std::string what = concat("camera '", camera.name, "'");
-    if (!isFinite(camera.eye)) fail(what, ": eye ", toText(camera.eye), " is not finite");
-    if (!isFinite(camera.target)) fail(what, ": target ", toText(camera.target), " is not finite");
+    if (!isUsableCoordinate(camera.eye))
+        fail(what, ": eye ", toText(camera.eye), " is not finite or beyond ±", kMaxWorldCoordinate);
+    if (!isUsableCoordinate(camera.target))
+        fail(what, ": target ", toText(camera.target), " is not finite or beyond ±", kMaxWorldCoordinate);
     if (!isFinite(camera.up)) fail(what, ": up vector ", toText(camera.up), " is not finite");
-    if (!std::isfinite(camera.fovYDeg) || camera.fovYDeg <= 0.0 || camera.fovYDeg >= 180.0)
+    // Below 0.001° the projection's scale (1/tan) leaves float's useful range.
+    if (!std::isfinite(camera.fovYDeg) || camera.fovYDeg < 1e-3 || camera.fovYDeg >= 180.0)
         fail(what, ": vertical field of view ", camera.fovYDeg,
-             "° must be between 0° and 180° (exclusive); 40°-60° is typical");
+             "° must be at least 0.001° and below 180°; 40°-60° is typical");
     const glm::dvec3 view = camera.target - camera.eye;
     const double viewLength = glm::length(view);
     if (viewLength == 0.0 || !std::isfinite(viewLength))

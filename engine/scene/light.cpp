@@ -47,8 +47,9 @@ void validateLight(const Light& light, const std::string& what) {
         checkLightRange(light.irradiance, light.color, what, "directional light", "irradiance", "W/m²");
         return;
     }
-    if (!isFinite(light.position))
-        fail(what, " (spot light): position ", toText(light.position), " is not finite");
+    if (!isUsableCoordinate(light.position))
+        fail(what, " (spot light): position ", toText(light.position), " is not finite or beyond ±",
+             kMaxWorldCoordinate);
     if (!std::isfinite(light.intensity) || light.intensity <= 0.0)
         fail(what, " (spot light): intensity ", light.intensity,
              " W/sr must be a positive finite number");
@@ -59,9 +60,9 @@ void validateLight(const Light& light, const std::string& what) {
     if (light.innerAngleDeg < 0.0)
         fail(what, " (spot light): inner cone angle ", light.innerAngleDeg,
              "° is negative; use a half-angle in [0°, outer angle]");
-    if (light.outerAngleDeg <= 0.0)
+    if (light.outerAngleDeg < 0.01)
         fail(what, " (spot light): outer cone angle ", light.outerAngleDeg,
-             "° must be positive (it is the half-angle outside which the spot is dark)");
+             "° must be at least 0.01° (it is the half-angle outside which the spot is dark)");
     if (light.innerAngleDeg > light.outerAngleDeg)
         fail(what, " (spot light): inner cone angle ", light.innerAngleDeg,
              "° is larger than the outer angle ", light.outerAngleDeg,

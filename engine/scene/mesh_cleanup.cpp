@@ -7,13 +7,10 @@
 
 #include "core/error.hpp"
 #include "core/log.hpp"
+#include "core/vector_text.hpp"
 
 namespace vct {
 namespace {
-
-bool isFinite(const glm::dvec3& v) {
-    return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
-}
 
 bool isFinite(const glm::dvec2& v) { return std::isfinite(v.x) && std::isfinite(v.y); }
 
@@ -52,7 +49,8 @@ void buildSceneGeometry(const WorldGeometry& g, const std::string& sourceName, b
 
     // --- 1. Non-finite positions (counted once per source vertex, however often instanced) ----
     std::vector<char> finite(vertexCount);
-    for (std::size_t v = 0; v < vertexCount; ++v) finite[v] = isFinite(g.positions[v]);
+    // Beyond ±kMaxWorldCoordinate counts as non-finite (core/vector_text.hpp).
+    for (std::size_t v = 0; v < vertexCount; ++v) finite[v] = isUsableCoordinate(g.positions[v]);
     std::vector<char> referenced(vertexCount, 0);
     for (std::uint32_t index : g.indices) referenced[index] = 1;
 
@@ -72,7 +70,7 @@ void buildSceneGeometry(const WorldGeometry& g, const std::string& sourceName, b
     report.nonFinitePositions = badSourceVertices.size();
     if (report.nonFinitePositions > 0 && !sanitize)
         fail(sourceName, ": ", report.nonFinitePositions,
-             " vertices have non-finite (NaN/Inf) positions (first: ", firstBad,
+             " vertices have non-finite (NaN/Inf, or beyond ±", kMaxWorldCoordinate, ") positions (first: ", firstBad,
              "); fix the model or pass --sanitize to drop the triangles that use them");
 
     // --- 2. Per-triangle checks: non-finite (sanitize), zero area -----------------------------

@@ -2,8 +2,9 @@
 // From world-space triangles (double precision, as gathered by the model importer or built by a
 // procedural scene) to the Scene's float buffers, with the input validated and repaired:
 //
-//   * triangles that use a vertex with a NaN/Inf position: an error naming the first such vertex,
-//     or (with `sanitize`) dropped and counted;
+//   * triangles that use a vertex with a NaN/Inf position (or one beyond ±kMaxWorldCoordinate =
+//     1e18, core/vector_text.hpp): an error naming the first such vertex, or (with `sanitize`)
+//     dropped and counted;
 //   * zero-area triangles (duplicate or collinear vertices, exact test in double): left out and
 //     counted, one warning;
 //   * missing, zero or non-finite normals: replaced by the (area-weighted) normal of the faces

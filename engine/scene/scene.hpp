@@ -62,7 +62,7 @@ struct Bounds {
 struct LoadReport {
     std::size_t sourceTriangles = 0;       // before any clean-up
     std::size_t degenerateTriangles = 0;   // zero area (kept out of the scene, counted)
-    std::size_t nonFinitePositions = 0;    // vertices with NaN/Inf position
+    std::size_t nonFinitePositions = 0;    // vertices with NaN/Inf position (or beyond ±1e18)
     std::size_t droppedTriangles = 0;      // removed because a vertex position was non-finite
     std::size_t repairedNormals = 0;       // missing, zero or non-finite normals regenerated
     std::size_t repairedUvs = 0;           // non-finite UVs set to 0
