@@ -49,7 +49,13 @@ Scene loadSceneFromOptions(const SceneOptions& o) {
     Scene scene = loadScene(o.scene, LoadOptions{o.sanitize});
     const bool sun = !o.sunDirection.empty() || o.sunIrradiance;
     const bool spot = !o.spotPosition.empty() || !o.spotDirection.empty() || o.spotIntensity || !o.spotAngles.empty();
-    if (!sun && !spot) return scene;
+    if (!sun && !spot) {
+        // Nothing is silently ignored: the tint belongs to lights given here.
+        if (!o.lightColor.empty())
+            fail("--light-color tints the lights given on the command line; add --sun-dir/--sun-irradiance or "
+                 "--spot-pos/--spot-dir/--spot-intensity/--spot-angles");
+        return scene;
+    }
     const glm::dvec3 color = o.lightColor.empty() ? glm::dvec3(1.0) : toVec3(o.lightColor, "--light-color");
     std::vector<Light> lights;
     if (sun) {

@@ -56,6 +56,9 @@ void Composite::render(const GBuffer& gbuffer, GLuint directRadiance, GLuint ind
     glBindImageTexture(0, hdr_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
     glBindImageTexture(1, ldr_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA8);
     gl::setUniform(p, "uAov", int(display.aov));
+    // 2^EV in float: beyond ±kMaxExposureEV it is 0 or Inf and the tone-mapped image garbage.
+    if (!std::isfinite(display.exposureEV) || std::abs(display.exposureEV) > kMaxExposureEV)
+        fail("exposure ", display.exposureEV, " EV must be a finite number of stops within ±", kMaxExposureEV);
     gl::setUniform(p, "uExposure", float(std::exp2(display.exposureEV)));
     gl::setUniform(p, "uToneCurve", int(display.toneCurve));
     gl::setUniform(p, "uEye", camera.eye);

@@ -18,6 +18,8 @@ Aov parseAov(const std::string& name);            // throws listing the valid na
 inline ToneCurve parseToneCurve(const std::string& name) { return parseTonemapCurve(name); }
 const char* aovName(Aov aov);
 
+constexpr double kMaxExposureEV = 64.0;  // |exposure| in stops; 2^±64 keeps float's range for any radiance
+
 struct DisplaySettings {
     Aov aov = Aov::Final;
     float giScale = 1.0f;  // artistic only; 1 in every accuracy measurement

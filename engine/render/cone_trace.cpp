@@ -27,6 +27,10 @@ void ConeTrace::render(const GBuffer& gbuffer, const Octree& octree, const Radia
     if (!(settings.apertureScale > 0.0f) || !(settings.step > 0.0f) || !(settings.offset >= 0.0f))
         fail("cone settings must be positive: --cone-aperture ", settings.apertureScale, ", --cone-step ",
              settings.step, ", --cone-offset ", settings.offset);
+    if (!(settings.lift >= 0.0f && settings.lift <= 4.0f))
+        fail("--cone-lift ", settings.lift, " is out of range; use 0..4 (normal offset per unit of cone diameter)");
+    if (!(settings.maxDistance >= 0.0f) || !std::isfinite(settings.maxDistance))
+        fail("cone maximum distance ", settings.maxDistance, " must be a finite number ≥ 0 (0: the whole volume)");
     const std::vector<Cone> cones = makeConeSet(settings.cones);
     std::vector<glm::vec3> directions;
     std::vector<float> tangents, weights;

@@ -9,7 +9,25 @@
 
 namespace vct {
 
+namespace {
+bool finite3(const glm::vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
+}  // namespace
+
 GpuScene::GpuScene(const Scene& scene) : vertexArray_(gl::createVertexArray()) {
+    // Loaders and built-in scenes are cleaned by buildSceneGeometry; a Scene filled in by hand may
+    // not be, and rasterizers treat NaN vertices differently: refuse it before anything is drawn.
+    std::size_t badVertices = 0;
+    for (const Vertex& v : scene.vertices)
+        badVertices += !finite3(v.position) || !finite3(v.normal) || !std::isfinite(v.uv.x) || !std::isfinite(v.uv.y);
+    if (badVertices > 0)
+        fail("scene '", scene.name, "' has ", badVertices, " vertices with non-finite positions, normals or texture "
+             "coordinates; build scenes through buildSceneGeometry (the loaders do), which refuses or repairs them");
+    for (std::uint32_t index : scene.indices)
+        if (index >= scene.vertices.size())
+            fail("scene '", scene.name, "' has a vertex index ", index, " beyond its ", scene.vertices.size(), " vertices");
+    for (const DrawRange& r : scene.drawRanges)
+        if (std::size_t(r.firstIndex) + r.indexCount > scene.indices.size() || r.material >= scene.materials.size())
+            fail("scene '", scene.name, "' has a draw range beyond its indices or materials");
     vertices_ = gl::createBuffer(GLsizeiptr(scene.vertices.size() * sizeof(Vertex)), scene.vertices.data(), 0,
                                  "scene vertices");
     indices_ = gl::createBuffer(GLsizeiptr(scene.indices.size() * sizeof(std::uint32_t)), scene.indices.data(), 0,
@@ -65,6 +83,13 @@ GpuScene::GpuScene(const Scene& scene) : vertexArray_(gl::createVertexArray()) {
 }
 
 void GpuScene::setMaterial(std::size_t index, const Material& material) {
+    if (!finite3(material.baseColor) || !finite3(material.emissive) || !std::isfinite(material.baseAlpha) ||
+        !std::isfinite(material.alphaCutoff) || glm::any(glm::lessThan(material.baseColor, glm::vec3(0.0f))) ||
+        glm::any(glm::lessThan(material.emissive, glm::vec3(0.0f))))
+        fail("material '", material.name, "': colour (", material.baseColor.x, ", ", material.baseColor.y, ", ",
+             material.baseColor.z, "), alpha ", material.baseAlpha, ", emission (", material.emissive.x, ", ",
+             material.emissive.y, ", ", material.emissive.z, ") and cutoff ", material.alphaCutoff,
+             " must be finite and not negative");
     materials_.at(index) = {material.baseColor, material.baseAlpha, material.emissive,
                             material.alphaMode == AlphaMode::Mask ? material.alphaCutoff : -1.0f,
                             material.baseColorTexture};
