@@ -46,6 +46,9 @@ double LightViewMap::maxTexelFlux(const Light& light, const LightViewTransform& 
 std::size_t LightViewMap::bytes() const { return std::size_t(resolution_) * resolution_ * (4 + 16 + 8 + 16); }
 
 void LightViewMap::render(const GpuScene& gpuScene, const Scene& scene, const Light& light) {
+    // Every light reaches the GPU through here (Renderer::setLights validates too, a Scene's own
+    // lights are not validated before): nothing non-finite or out of float's range is drawn.
+    validateLight(light, "light");
     transform_ = lightView(light, scene, resolution_);
     glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_.id());
     glViewport(0, 0, resolution_, resolution_);

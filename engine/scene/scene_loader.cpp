@@ -20,6 +20,7 @@
 
 #include "core/error.hpp"
 #include "core/log.hpp"
+#include "core/vector_text.hpp"
 #include "scene/material_import.hpp"
 #include "scene/mesh_cleanup.hpp"
 
@@ -125,7 +126,8 @@ NonFiniteScan removeNonFinitePositions(aiScene& ai, const std::vector<FlatNode>&
         std::size_t badHere = 0;
         for (unsigned v = 0; v < mesh->mNumVertices; ++v) {
             const aiVector3D& p = mesh->mVertices[v];
-            if (std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z)) continue;
+            // Beyond ±kMaxWorldCoordinate counts as non-finite too (as in buildSceneGeometry).
+            if (isUsableCoordinate(toDouble(p))) continue;
             bad[v] = 1;
             ++badHere;
             if (first.empty())
@@ -165,8 +167,8 @@ NonFiniteScan removeNonFinitePositions(aiScene& ai, const std::vector<FlatNode>&
             if (bad[v]) mesh->mVertices[v] = aiVector3D(0.0f, 0.0f, 0.0f);
     }
     if (scan.vertices > 0 && !sanitize)
-        fail(source, ": ", scan.vertices, " vertices have non-finite (NaN/Inf) positions (first: ",
-             first, "); fix the model or pass --sanitize to drop the triangles that use them");
+        fail(source, ": ", scan.vertices, " vertices have non-finite (NaN/Inf, or beyond ±", kMaxWorldCoordinate,
+             ") positions (first: ", first, "); fix the model or pass --sanitize to drop the triangles that use them");
     if (scan.droppedTriangles > 0)
         logWarn(concat(source, ": dropped ", scan.droppedTriangles, " triangles that use the ",
                        scan.vertices, " vertices with non-finite positions (--sanitize)"));
