@@ -159,3 +159,26 @@ TEST_F(PassGraphTest, IncrementalFramesAreBitIdenticalToFreshOnes) {
     for (std::size_t i = 0; i < a.rgba.size(); ++i) different += a.rgba[i] != b.rgba[i];
     EXPECT_EQ(different, 0u) << "values differ between the incremental and the fresh frame";
 }
+
+TEST_F(PassGraphTest, ChangingVoxelLevelsBackAndForthKeepsTheImageOfAFreshRender) {
+    // The benchmark's path through settings: levels down, up, back, then a cone change.
+    const Camera camera = scene_.cameras[0];
+    RenderSettings s = smallSettings();
+    Renderer incremental(scene_, s);
+    incremental.renderFrame(camera);
+    for (int levels : {6, 7, 5}) {
+        s.voxelLevels = levels;
+        incremental.setSettings(s);
+        incremental.renderFrame(camera);
+    }
+    s.cones.cones = 9;
+    incremental.setSettings(s);
+    incremental.renderFrame(camera);
+    const ImageF a = incremental.readHdr();
+    Renderer fresh(scene_, s);
+    fresh.renderFrame(camera);
+    const ImageF b = fresh.readHdr();
+    std::size_t different = 0;
+    for (std::size_t i = 0; i < a.rgba.size(); ++i) different += a.rgba[i] != b.rgba[i];
+    EXPECT_EQ(different, 0u);
+}
