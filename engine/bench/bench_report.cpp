@@ -230,13 +230,16 @@ void writeMarkdown(const std::filesystem::path& path, const std::vector<BenchRow
     const BenchRow* def = defaultRow(rows);
     md << "# Run time against error: " << s.scene << " (sweep `" << s.name << "`)\n\n";
     md << "Produced by `" << s.command << "` on " << s.date
-       << (s.commit.empty() ? std::string() : " at commit " + s.commit) << ". Engine: " << s.renderer << " (" << s.backend
+       << (s.commit.empty() ? std::string() : " at commit " + s.commit)
+       << (s.shaderDir.empty() ? std::string() : ", shaders from " + s.shaderDir + " (VCT_SHADER_DIR)")
+       << ". Engine: " << s.renderer << " (" << s.backend
        << "); CPU: " << s.cpu << ". Image " << s.width << "×" << s.height << ", camera `" << s.camera
        << "`, display for PSNR/SSIM: " << num(s.exposureEV) << " EV, " << s.tonemap << ".";
     if (!s.loadBefore.empty())
         md << " Load average (1, 5, 15 min) at the start " << s.loadBefore << ", at the end " << s.loadAfter
            << ": the cores were shared with other work, which is why every time is the fastest of several runs.";
     md << "\n\n";
+    if (!s.note.empty()) md << "Note: " << s.note << "\n\n";
     md << "Ground truth: `vct reference` with " << s.referenceBounces << " indirect bounce"
        << (s.referenceBounces == 1 ? "" : "s") << ", " << s.referenceSpp << " spp, seed " << s.referenceSeed << " ("
        << num(s.referenceSeconds, "%.1f") << " s, direct-only " << num(s.referenceDirectSeconds, "%.1f") << " s"

@@ -32,6 +32,8 @@ EqualErrorTime pathTracerTimeAt(const std::vector<BenchRow>& rows, double rmse, 
 struct BenchSummary {
     std::string name, scene, camera, command, date, renderer, backend, cpu;
     std::string commit;  // `git describe --always --dirty` of the source tree (shaders are read from it)
+    std::string shaderDir;  // VCT_SHADER_DIR when set (shaders not from the source tree)
+    std::string note;       // --note
     int width = 0, height = 0, repeats = 0, pathTracerThreads = 0;
     double exposureEV = 0.0;
     std::string tonemap;

@@ -73,7 +73,7 @@ void applyParameter(RenderSettings& s, const std::string& name, const Json& v) {
     } else if (name == "cone_offset") {
         s.cones.offset = float(number(v, what, 0.0, 16.0));
     } else if (name == "cone_lift") {
-        s.cones.lift = float(number(v, what, 0.0, 16.0));
+        s.cones.lift = float(number(v, what, 0.0, 4.0));
     } else if (name == "bricks") {
         s.bricks = boolean(v, what);
     } else if (name == "light_view_res") {

@@ -5,6 +5,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <ctime>
 #include <fstream>
 #include <thread>
@@ -32,6 +33,7 @@ struct BenchOptions {
     int threads = 0;
     int repeats = 0;  // 0 = the sweep's
     bool refreshReference = false;
+    std::string note;
 };
 
 const std::filesystem::path kSourceDir = VCT_SOURCE_DIR;
@@ -192,6 +194,8 @@ void run(const BenchOptions& o) {
     summary.defaultSettings = bench::describeSettings(points.front().settings);
     summary.loadBefore = loadBefore;
     summary.commit = sourceCommit();
+    if (const char* dir = std::getenv("VCT_SHADER_DIR"); dir && *dir) summary.shaderDir = dir;
+    summary.note = o.note;
     summary.loadAfter = loadAverage();
 
     bench::writeCsv(csvPath, rows);
@@ -246,6 +250,7 @@ Run addBenchCommand(CLI::App& app) {
     command->add_option("--repeats", o.repeats, "warm full frames timed per point (0 = the sweep's)")
         ->capture_default_str();
     command->add_option("--backend", o.backend, "osmesa, egl or glfw")->capture_default_str();
+    command->add_option("--note", o.note, "a sentence for the markdown report (e.g. how the run differs from the commit)");
     return [options] { run(*options); };
 }
 
