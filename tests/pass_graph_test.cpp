@@ -182,3 +182,32 @@ TEST_F(PassGraphTest, ChangingVoxelLevelsBackAndForthKeepsTheImageOfAFreshRender
     for (std::size_t i = 0; i < a.rgba.size(); ++i) different += a.rgba[i] != b.rgba[i];
     EXPECT_EQ(different, 0u);
 }
+// The benchmark's path through settings (full frames, direct AOV, nudged lights and camera, a level
+// change and back, then a cone change): GI must be what a fresh renderer gives.
+TEST_F(PassGraphTest, BenchmarkSequenceKeepsGi) {
+    const Camera camera = scene_.cameras[0];
+    RenderSettings base = smallSettings();
+    Renderer r(scene_, base);
+    r.renderFrame(camera);
+    RenderSettings full = base; full.fullFrames = true;
+    r.setSettings(full); r.renderFrame(camera);
+    r.setSettings(base); r.renderFrame(camera);
+    const std::vector<Light> lights = r.lights();
+    std::vector<Light> nudged = lights; for (Light& l : nudged) { l.irradiance *= 1.0001; l.intensity *= 1.0001; }
+    Camera nc = camera; nc.eye += (camera.target - camera.eye) * 1e-4;
+    RenderSettings p = base; p.voxelLevels = 6;
+    r.setSettings(p); r.renderFrame(camera);
+    RenderSettings pd = p; pd.display.aov = Aov::Direct; r.setSettings(pd); r.renderFrame(camera);
+    RenderSettings pf = p; pf.fullFrames = true; r.setSettings(pf); r.renderFrame(camera); r.renderFrame(camera);
+    r.setSettings(p);
+    for (int i = 0; i < 2; ++i) { r.setLights(i % 2 == 0 ? nudged : lights); r.renderFrame(i % 2 == 0 ? nc : camera); }
+    r.setLights(lights);
+    r.setSettings(base); r.renderFrame(camera);
+    RenderSettings c = base; c.cones.cones = 1; c.display.aov = Aov::Indirect;
+    r.setSettings(c); r.renderFrame(camera);
+    const ImageF a = r.readHdr();
+    Renderer fresh(scene_, c); fresh.renderFrame(camera);
+    const ImageF b = fresh.readHdr();
+    double sa = 0, sb = 0; for (std::size_t i = 0; i < a.rgba.size(); ++i) { sa += a.rgba[i]; sb += b.rgba[i]; }
+    EXPECT_GT(sa, 0.0); EXPECT_NEAR(sa, sb, 1e-6 * sb) << sa << " vs " << sb;
+}
