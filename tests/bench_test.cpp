@@ -130,19 +130,27 @@ TEST(Bench, ParetoFrontAndEqualErrorTime) {
     EXPECT_FALSE(rows[5].pareto) << "path-tracer rows are not part of the engine's front";
 
     // On the curve: exact at a point, log–log interpolation between points.
-    auto t = bench::pathTracerTimeAt(rows, 0.2, false);
+    auto t = bench::pathTracerTimeAt(rows, 0.2, bench::Quality::Rmse);
     EXPECT_TRUE(t.valid);
     EXPECT_FALSE(t.extrapolated);
     EXPECT_NEAR(t.ms, 4.0, 1e-9);
-    t = bench::pathTracerTimeAt(rows, std::sqrt(0.2 * 0.1), false);
+    t = bench::pathTracerTimeAt(rows, std::sqrt(0.2 * 0.1), bench::Quality::Rmse);
     EXPECT_NEAR(t.ms, 8.0, 1e-9);
     // Beyond its ends: time ∝ 1/RMSE², flagged.
-    t = bench::pathTracerTimeAt(rows, 0.8, false);
+    t = bench::pathTracerTimeAt(rows, 0.8, bench::Quality::Rmse);
     EXPECT_TRUE(t.extrapolated);
     EXPECT_NEAR(t.ms, 0.25, 1e-9);
-    t = bench::pathTracerTimeAt(rows, 0.05, false);
+    t = bench::pathTracerTimeAt(rows, 0.05, bench::Quality::Rmse);
     EXPECT_TRUE(t.extrapolated);
     EXPECT_NEAR(t.ms, 64.0, 1e-9);
+    // SSIM (higher is better) is read off as 1 − SSIM and never extrapolated.
+    for (auto& r : rows) r.error.ssim = 1.0 - r.error.rmse;
+    t = bench::pathTracerTimeAt(rows, 0.8, bench::Quality::Ssim);
+    EXPECT_TRUE(t.valid);
+    EXPECT_NEAR(t.ms, 4.0, 1e-9);
+    EXPECT_FALSE(bench::pathTracerTimeAt(rows, 0.99, bench::Quality::Ssim).valid);
+    const std::vector<bool> bySsim = bench::paretoFront(rows, bench::Quality::Ssim);
+    for (std::size_t i = 0; i < rows.size(); ++i) EXPECT_EQ(bySsim[i], rows[i].pareto) << i;
 }
 
 // The whole benchmark on tiny images: rows, finite numbers, chart, the reference cache, and the

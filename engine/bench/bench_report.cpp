@@ -23,7 +23,15 @@ std::string num(double v, const char* format = "%.6g") {
     return text;
 }
 
-double rmseOf(const BenchRow& r, bool indirect) { return indirect ? r.error.indirectRmse : r.error.rmse; }
+// Lower is better.
+double errorOf(const BenchRow& r, Quality q) {
+    switch (q) {
+        case Quality::Rmse: return r.error.rmse;
+        case Quality::IndirectRmse: return r.error.indirectRmse;
+        case Quality::Ssim: return 1.0 - r.error.ssim;
+    }
+    return r.error.rmse;
+}
 
 std::vector<const BenchRow*> curveOf(const std::vector<BenchRow>& rows) {
     std::vector<const BenchRow*> curve;
@@ -120,7 +128,18 @@ std::string shortLabel(const BenchRow& r) {
 
 }  // namespace
 
-std::vector<bool> paretoFront(const std::vector<BenchRow>& rows, bool indirect) {
+const char* qualityName(Quality q) {
+    switch (q) {
+        case Quality::Rmse: return "full-image RMSE";
+        case Quality::IndirectRmse: return "indirect RMSE";
+        case Quality::Ssim: return "SSIM";
+    }
+    return "?";
+}
+
+double qualityValue(const BenchRow& r, Quality q) { return q == Quality::Ssim ? r.error.ssim : errorOf(r, q); }
+
+std::vector<bool> paretoFront(const std::vector<BenchRow>& rows, Quality quality) {
     std::vector<bool> front(rows.size(), false);
     for (std::size_t i = 0; i < rows.size(); ++i) {
         if (rows[i].kind != "engine") continue;
@@ -128,7 +147,7 @@ std::vector<bool> paretoFront(const std::vector<BenchRow>& rows, bool indirect) 
         for (std::size_t j = 0; j < rows.size() && !dominated; ++j) {
             if (j == i || rows[j].kind != "engine") continue;
             const double ti = rows[i].frameMs, tj = rows[j].frameMs;
-            const double ei = rmseOf(rows[i], indirect), ej = rmseOf(rows[j], indirect);
+            const double ei = errorOf(rows[i], quality), ej = errorOf(rows[j], quality);
             dominated = tj <= ti && ej <= ei && (tj < ti || ej < ei);
         }
         front[i] = !dominated;
@@ -137,28 +156,35 @@ std::vector<bool> paretoFront(const std::vector<BenchRow>& rows, bool indirect) 
 }
 
 void markPareto(std::vector<BenchRow>& rows) {
-    const std::vector<bool> front = paretoFront(rows, false);
+    const std::vector<bool> front = paretoFront(rows, Quality::Rmse);
     for (std::size_t i = 0; i < rows.size(); ++i) rows[i].pareto = front[i];
 }
 
-EqualErrorTime pathTracerTimeAt(const std::vector<BenchRow>& rows, double rmse, bool indirect) {
+EqualErrorTime pathTracerTimeAt(const std::vector<BenchRow>& rows, double value, Quality quality) {
     EqualErrorTime result;
     const std::vector<const BenchRow*> curve = curveOf(rows);
-    if (curve.empty() || !(rmse > 0.0)) return result;
-    result.valid = true;
+    const double target = quality == Quality::Ssim ? 1.0 - value : value;
+    if (curve.empty() || !(target > 0.0)) return result;
+    const bool canExtrapolate = quality != Quality::Ssim;
     const BenchRow& first = *curve.front();
-    if (rmse >= rmseOf(first, indirect)) {
-        const double e = rmseOf(first, indirect);
-        result.ms = first.frameMs * (e / rmse) * (e / rmse);
-        result.extrapolated = rmse > e;
+    const double eFirst = errorOf(first, quality);
+    if (target >= eFirst) {
+        if (target > eFirst && !canExtrapolate) {
+            result.how = concat("worse than the path tracer at ", first.spp, " spp");
+            return result;
+        }
+        result.valid = true;
+        result.ms = first.frameMs * (eFirst / target) * (eFirst / target);
+        result.extrapolated = target > eFirst;
         result.how = result.extrapolated ? concat("below ", first.spp, " spp (extrapolated, time ∝ 1/RMSE²)")
                                          : concat("at ", first.spp, " spp");
         return result;
     }
     for (std::size_t i = 0; i + 1 < curve.size(); ++i) {
-        const double e0 = rmseOf(*curve[i], indirect), e1 = rmseOf(*curve[i + 1], indirect);
-        if (e0 >= rmse && rmse >= e1 && e0 > e1) {
-            const double f = (std::log(e0) - std::log(rmse)) / (std::log(e0) - std::log(e1));
+        const double e0 = errorOf(*curve[i], quality), e1 = errorOf(*curve[i + 1], quality);
+        if (e0 >= target && target >= e1 && e0 > e1) {
+            const double f = (std::log(e0) - std::log(target)) / (std::log(e0) - std::log(e1));
+            result.valid = true;
             result.ms = std::exp(std::log(curve[i]->frameMs) + f * (std::log(curve[i + 1]->frameMs) - std::log(curve[i]->frameMs)));
             result.how = concat("between ", curve[i]->spp, " and ", curve[i + 1]->spp, " spp");
             return result;
@@ -166,8 +192,13 @@ EqualErrorTime pathTracerTimeAt(const std::vector<BenchRow>& rows, double rmse, 
     }
     // Below the whole curve: the noise floor of the reference makes this a rough estimate.
     const BenchRow& last = *curve.back();
-    const double e = rmseOf(last, indirect);
-    result.ms = last.frameMs * (e / rmse) * (e / rmse);
+    if (!canExtrapolate) {
+        result.how = concat("better than the path tracer at ", last.spp, " spp");
+        return result;
+    }
+    const double e = errorOf(last, quality);
+    result.valid = true;
+    result.ms = last.frameMs * (e / target) * (e / target);
     result.extrapolated = true;
     result.how = concat("beyond ", last.spp, " spp (extrapolated, time ∝ 1/RMSE²)");
     return result;
@@ -180,7 +211,7 @@ std::string describeSettings(const RenderSettings& s) {
 }
 
 void writeCsv(const std::filesystem::path& path, const std::vector<BenchRow>& rows) {
-    const std::vector<bool> frontIndirect = paretoFront(rows, true);
+    const std::vector<bool> frontIndirect = paretoFront(rows, Quality::IndirectRmse);
     std::vector<std::string> passNames;
     for (const auto& r : rows)
         for (const auto& p : r.passes)
@@ -268,37 +299,29 @@ void writeMarkdown(const std::filesystem::path& path, const std::vector<BenchRow
            << ", relMSE " << num(def->error.indirectRelMse, "%.4g") << ", mean " << num(def->error.indirectRatio, "%.3f")
            << "× the reference's; direct part RMSE " << num(def->error.directRmse, "%.4g") << ". Frame "
            << num(def->frameMs, "%.1f") << " ms (static geometry " << num(def->frameStaticMs, "%.1f") << " ms).\n";
-        for (bool indirect : {false, true}) {
-            const double e = indirect ? def->error.indirectRmse : def->error.rmse;
-            const EqualErrorTime t = pathTracerTimeAt(rows, e, indirect);
-            if (!t.valid) continue;
-            md << "- Equal error, " << (indirect ? "indirect part" : "full image") << ": the path tracer reaches RMSE "
-               << num(e, "%.4g") << " in " << num(t.ms, "%.1f") << " ms (" << t.how << "): "
+        for (Quality q : {Quality::Rmse, Quality::IndirectRmse, Quality::Ssim}) {
+            const double v = qualityValue(*def, q);
+            const EqualErrorTime t = pathTracerTimeAt(rows, v, q);
+            md << "- Equal " << qualityName(q) << " (" << num(v, "%.4g") << "): ";
+            if (!t.valid) {
+                md << "not on the path tracer's curve (" << t.how << ").\n";
+                continue;
+            }
+            md << "the path tracer needs " << num(t.ms, "%.1f") << " ms (" << t.how << "): "
                << num(t.ms / def->frameMs, "%.3g") << "× the engine's full frame, "
                << num(t.ms / def->frameStaticMs, "%.3g") << "× its static-geometry frame.\n";
         }
     }
-    md << "- Pareto front (full-image RMSE against frame ms):";
-    {
-        std::vector<const BenchRow*> front;
-        for (const auto& r : rows)
-            if (r.kind == "engine" && r.pareto) front.push_back(&r);
-        std::sort(front.begin(), front.end(), [](auto* a, auto* b) { return a->frameMs < b->frameMs; });
-        for (std::size_t i = 0; i < front.size(); ++i)
-            md << (i ? "," : "") << " " << front[i]->label << " (" << num(front[i]->frameMs, "%.0f") << " ms, "
-               << num(front[i]->error.rmse, "%.4g") << ")";
-    }
-    md << "\n";
-    {
-        const std::vector<bool> front = paretoFront(rows, true);
+    for (Quality q : {Quality::Rmse, Quality::IndirectRmse, Quality::Ssim}) {
+        const std::vector<bool> front = paretoFront(rows, q);
         std::vector<const BenchRow*> list;
         for (std::size_t i = 0; i < rows.size(); ++i)
             if (front[i]) list.push_back(&rows[i]);
         std::sort(list.begin(), list.end(), [](auto* a, auto* b) { return a->frameMs < b->frameMs; });
-        md << "- Pareto front (indirect RMSE against frame ms):";
+        md << "- Pareto front (" << qualityName(q) << " against frame ms):";
         for (std::size_t i = 0; i < list.size(); ++i)
             md << (i ? "," : "") << " " << list[i]->label << " (" << num(list[i]->frameMs, "%.0f") << " ms, "
-               << num(list[i]->error.indirectRmse, "%.4g") << ")";
+               << num(qualityValue(*list[i], q), "%.4g") << ")";
         md << "\n";
     }
     bool allIdentical = true;
@@ -347,7 +370,8 @@ void writeMarkdown(const std::filesystem::path& path, const std::vector<BenchRow
 
 std::string writeChart(const std::filesystem::path& script, const std::filesystem::path& png,
                        const std::vector<BenchRow>& rows, const BenchSummary& s) {
-    const std::vector<bool> frontFull = paretoFront(rows, false), frontIndirect = paretoFront(rows, true);
+    const std::vector<bool> frontFull = paretoFront(rows, Quality::Rmse),
+                            frontIndirect = paretoFront(rows, Quality::IndirectRmse);
     std::ostringstream gp;
     gp << "# Drawn by `vct bench` (" << s.command << "); run `gnuplot " << script.filename().string()
        << "` to draw it again.\n";

@@ -11,23 +11,30 @@
 
 namespace vct::bench {
 
+// The quality a front or an equal-quality time is taken for: RMSE of the full image or of the
+// indirect part (lower is better), SSIM of the displayed full image (higher is better; handled as
+// the dissimilarity 1 − SSIM).
+enum class Quality { Rmse, IndirectRmse, Ssim };
+const char* qualityName(Quality quality);
+double qualityValue(const BenchRow& row, Quality quality);  // as reported (SSIM itself, not 1 − SSIM)
+
 // Marks BenchRow::pareto on the engine rows: a point is on the front when no other engine point
-// is at least as fast and at least as accurate (full-image RMSE) and better in one of them.
-// `indirect` uses the indirect part's RMSE instead and returns the flags without storing them.
-std::vector<bool> paretoFront(const std::vector<BenchRow>& rows, bool indirect);
+// is at least as fast and at least as good (full-image RMSE) and better in one of them.
+// paretoFront returns the flags for any quality without storing them.
+std::vector<bool> paretoFront(const std::vector<BenchRow>& rows, Quality quality);
 void markPareto(std::vector<BenchRow>& rows);
 
-// The time the path tracer needs to reach `rmse` (full image, or the indirect part), read off its
-// curve (the path-tracer rows) by linear interpolation of log time against log RMSE between the
-// two spp values around it. Outside the curve: extrapolated with error ∝ 1/√spp, i.e. time ∝
-// 1/RMSE², from its nearest end, and flagged.
+// The time the path tracer needs to reach `value` of `quality`, read off its curve (the
+// path-tracer rows) by linear interpolation of log time against log error (RMSE, or 1 − SSIM)
+// between the two spp values around it. Outside the curve: for RMSE extrapolated with error ∝
+// 1/√spp, i.e. time ∝ 1/RMSE², from its nearest end, and flagged; for SSIM not valid.
 struct EqualErrorTime {
     double ms = 0.0;
-    bool valid = false;         // false without a path-tracer curve
+    bool valid = false;         // false without a path-tracer curve (or SSIM outside it)
     bool extrapolated = false;
     std::string how;            // "between 4 and 8 spp", "below 1 spp (extrapolated)", …
 };
-EqualErrorTime pathTracerTimeAt(const std::vector<BenchRow>& rows, double rmse, bool indirect);
+EqualErrorTime pathTracerTimeAt(const std::vector<BenchRow>& rows, double value, Quality quality);
 
 struct BenchSummary {
     std::string name, scene, camera, command, date, renderer, backend, cpu;

@@ -209,14 +209,14 @@ void run(const BenchOptions& o) {
                         "%.4g (mean x%.3f of the reference); frame %.1f ms (static geometry %.1f ms)\n",
                         r.error.rmse, r.error.relMse, r.error.psnr, r.error.ssim, r.error.indirectRmse,
                         r.error.indirectRelMse, r.error.indirectRatio, r.frameMs, r.frameStaticMs);
-            for (bool indirect : {false, true}) {
-                const double e = indirect ? r.error.indirectRmse : r.error.rmse;
-                const bench::EqualErrorTime t = bench::pathTracerTimeAt(rows, e, indirect);
+            for (bench::Quality q : {bench::Quality::Rmse, bench::Quality::IndirectRmse, bench::Quality::Ssim}) {
+                const bench::EqualErrorTime t = bench::pathTracerTimeAt(rows, bench::qualityValue(r, q), q);
                 if (t.valid)
-                    std::printf("equal error (%s): path tracer %.1f ms (%s) = %.3gx the engine frame, %.3gx its "
+                    std::printf("equal %s: path tracer %.1f ms (%s) = %.3gx the engine frame, %.3gx its "
                                 "static-geometry frame\n",
-                                indirect ? "indirect part" : "full image", t.ms, t.how.c_str(), t.ms / r.frameMs,
-                                t.ms / r.frameStaticMs);
+                                bench::qualityName(q), t.ms, t.how.c_str(), t.ms / r.frameMs, t.ms / r.frameStaticMs);
+                else
+                    std::printf("equal %s: %s\n", bench::qualityName(q), t.how.c_str());
             }
         }
         std::printf("Pareto front:");
