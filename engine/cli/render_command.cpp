@@ -11,6 +11,7 @@
 #include "gl/context.hpp"
 #include "pipeline/renderer.hpp"
 #include "pipeline/timings_report.hpp"
+#include "render/memory_budget.hpp"
 
 namespace vct::cli {
 namespace {
@@ -28,6 +29,7 @@ struct RenderOptions {
     std::string lightPath;
     std::string cameraPath;
     RenderSettingsOptions render;  // shared with `vct view`
+    std::optional<double> memoryBudgetMiB;
 };
 
 // The lights turned by `turn` (0..1 of a full circle) around the vertical axis through the scene's
@@ -66,6 +68,12 @@ void run(const RenderOptions& o) {
     settings.width = o.width;
     settings.height = o.height;
     settings.fullFrames = o.fullFrames;
+    // Before any GPU allocation: with a memory budget, a frame that would not fit fails here.
+    if (o.memoryBudgetMiB) setMemoryBudgetMiB(*o.memoryBudgetMiB);
+    const bool lit = settings.view == ViewMode::Lit;
+    checkMemoryBudget(scene, MemoryRequest{settings.width, settings.height, settings.lightViewResolution,
+                                           settings.voxelLevels, settings.gi || !lit,
+                                           (lit && settings.gi) || settings.view == ViewMode::Radiance});
 
     auto context = gl::createContext(backend);
     Renderer renderer(scene, settings);
@@ -119,6 +127,9 @@ Run addRenderCommand(CLI::App& app) {
     command->add_option("--frames", o.frames, "render this many frames; timings are the last frame's")
         ->capture_default_str();
     addRenderSettingsOptions(*command, o.render);
+    command->add_option("--memory-budget", o.memoryBudgetMiB,
+                        "GPU memory budget in MiB (default: $VCT_MEMORY_BUDGET_MIB, else none): a frame whose "
+                        "estimate exceeds it fails before allocating, naming the largest setting that fits");
     command->add_flag("--full-frames", o.fullFrames,
                       "run every pass every frame, as if the geometry changed (benchmarks: with --frames 2 a "
                       "warm full frame is timed); otherwise a frame re-runs only what changed");
