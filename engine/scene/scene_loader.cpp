@@ -12,7 +12,9 @@
 #include <unordered_map>
 #include <unordered_set>
 
+#include <assimp/DefaultLogger.hpp>
 #include <assimp/Importer.hpp>
+#include <assimp/LogStream.hpp>
 #include <assimp/config.h>
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
@@ -97,6 +99,47 @@ std::vector<FlatNode> flattenNodes(const aiScene& ai) {
     }
     return out;
 }
+
+// ------------------------------------------------------------------------------------------------
+// Assimp's own warnings: what it repairs or drops (faces with out-of-range indices, material
+// libraries it cannot find, unknown materials) it only logs. Nothing may be dropped silently, so
+// the messages of one load are collected and, if the load succeeds, passed on as vct warnings.
+
+thread_local std::vector<std::string>* assimpMessages = nullptr;
+
+struct AssimpMessageStream : Assimp::LogStream {
+    void write(const char* message) override {
+        if (!assimpMessages) return;
+        std::string text(message);
+        // "Warn,  T0: text\n" → "text"
+        if (const auto colon = text.find(": "); colon != std::string::npos && colon < 16) text.erase(0, colon + 2);
+        while (!text.empty() && (text.back() == '\n' || text.back() == '\r')) text.pop_back();
+        // Benign: the OBJ reader makes a default object for faces before any "o"/"g" line.
+        if (text.find("No object detected to attach a new mesh instance") != std::string::npos) return;
+        if (!text.empty() && std::find(assimpMessages->begin(), assimpMessages->end(), text) == assimpMessages->end())
+            assimpMessages->push_back(text);
+    }
+};
+
+class AssimpMessages {
+public:
+    AssimpMessages() {
+        static const bool attached = [] {
+            if (Assimp::DefaultLogger::isNullLogger()) Assimp::DefaultLogger::create("", Assimp::Logger::NORMAL, 0);
+            return Assimp::DefaultLogger::get()->attachStream(new AssimpMessageStream,
+                                                              Assimp::Logger::Warn | Assimp::Logger::Err);
+        }();
+        (void)attached;
+        assimpMessages = &messages_;
+    }
+    ~AssimpMessages() { assimpMessages = nullptr; }
+    void report(const std::string& source) const {
+        for (const std::string& m : messages_) logWarn(concat(source, ": ", m));
+    }
+
+private:
+    std::vector<std::string> messages_;
+};
 
 // ------------------------------------------------------------------------------------------------
 // Geometry
@@ -470,6 +513,7 @@ Scene loadModelFile(const fs::path& path, const LoadOptions& options) {
     // vertices and generate normals where the file has none. Node transforms are applied below,
     // in double precision (not aiProcess_PreTransformVertices).
     const aiScene* ai = nullptr;
+    const AssimpMessages assimpLog;
     try {
         ai = importer.ReadFile(source, aiProcess_Triangulate | aiProcess_SortByPType);
     } catch (const std::exception& e) {
@@ -491,6 +535,7 @@ Scene loadModelFile(const fs::path& path, const LoadOptions& options) {
     }
     if (!ai || !ai->mRootNode)
         fail("cannot read model '", source, "': ", importer.GetErrorString());
+    assimpLog.report(source);
 
     const bool gltf = isGltf(path);
     const std::vector<FlatNode> nodes = flattenNodes(*ai);
