@@ -8,6 +8,11 @@
 namespace vct {
 namespace {
 
+std::string concatSize(int width, int height) {
+    return std::to_string(width) + "x" + std::to_string(height) +
+           " texels, more than vct decodes (16384 per side, 134217728 in all)";
+}
+
 std::optional<Texture> adopt(stbi_uc* pixels, int width, int height, const std::string& name,
                              std::string& error) {
     if (!pixels) {
@@ -25,11 +30,26 @@ std::optional<Texture> adopt(stbi_uc* pixels, int width, int height, const std::
     return texture;
 }
 
+// Textures up to 16384 texels per side (GL_MAX_TEXTURE_SIZE on llvmpipe and most GPUs) and 2^27
+// texels (512 MiB decoded) are decoded; larger ones are refused from their header, before
+// stb_image allocates what a 100-byte file may declare (20000² texels: 1.6 GB).
+constexpr int kMaxTextureSide = 16384;
+constexpr long long kMaxTextureTexels = 1ll << 27;
+
+bool tooLarge(bool headerRead, int width, int height, std::string& error) {
+    if (!headerRead || (width <= kMaxTextureSide && height <= kMaxTextureSide &&
+                        (long long)width * height <= kMaxTextureTexels))
+        return false;
+    error = concatSize(width, height);
+    return true;
+}
+
 }  // namespace
 
 std::optional<Texture> decodeImageFile(const std::filesystem::path& file, const std::string& name,
                                        std::string& error) {
     int width = 0, height = 0, channels = 0;
+    if (tooLarge(stbi_info(file.c_str(), &width, &height, &channels) != 0, width, height, error)) return std::nullopt;
     stbi_uc* pixels = stbi_load(file.c_str(), &width, &height, &channels, 4);
     return adopt(pixels, width, height, name, error);
 }
@@ -45,6 +65,9 @@ std::optional<Texture> decodeImageMemory(const std::uint8_t* data, std::size_t s
         return std::nullopt;
     }
     int width = 0, height = 0, channels = 0;
+    if (tooLarge(stbi_info_from_memory(data, static_cast<int>(size), &width, &height, &channels) != 0, width, height,
+                 error))
+        return std::nullopt;
     stbi_uc* pixels =
         stbi_load_from_memory(data, static_cast<int>(size), &width, &height, &channels, 4);
     return adopt(pixels, width, height, name, error);
