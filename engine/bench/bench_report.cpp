@@ -374,9 +374,10 @@ std::string writeChart(const std::filesystem::path& script, const std::filesyste
                             frontIndirect = paretoFront(rows, Quality::IndirectRmse);
     std::ostringstream gp;
     gp << "# Drawn by `vct bench` (" << s.command << "); run `gnuplot " << script.filename().string()
-       << "` to draw it again.\n";
+       << "` in this folder to draw it again.\n";
     gp << "set terminal pngcairo size 2100,700 enhanced font 'DejaVu Sans,10'\n";
-    gp << "set output " << quoteGnuplot(png.string()) << "\n";
+    // Relative to the script's folder, where gnuplot runs, so the script works wherever it lies.
+    gp << "set output " << quoteGnuplot(png.filename().string()) << "\n";
     auto block = [&](const char* name, auto select) {
         std::vector<const BenchRow*> list;
         for (std::size_t i = 0; i < rows.size(); ++i)
@@ -466,7 +467,9 @@ std::string writeChart(const std::filesystem::path& script, const std::filesyste
                       script.string(), ". Install it (Debian: apt-get install gnuplot-nox) and run: gnuplot ",
                       script.string());
     std::filesystem::remove(png);
-    const std::string command = "gnuplot " + quoteShell(script.string()) + " 2>&1";
+    const std::filesystem::path folder = script.parent_path().empty() ? "." : script.parent_path();
+    const std::string command =
+        "cd " + quoteShell(folder.string()) + " && gnuplot " + quoteShell(script.filename().string()) + " 2>&1";
     std::string output;
     if (FILE* pipe = popen(command.c_str(), "r")) {
         char buffer[1024];
