@@ -2,7 +2,7 @@
 // and image files of tests/data/bad (made by its make_corpus.py) through the real `vct` command
 // and through loadModelFile in-process. Each ends in one clear error naming the file, or in the
 // documented fallback with a warning — never a crash, another exception or a non-finite scene.
-// The libFuzzer target for the same loader is tests/fuzz (ctest StressFuzz.LoaderFor20Seconds).
+// The libFuzzer target for the same loader is tests/fuzz (ctest StressFuzz.Loader1500FixedSeedRuns).
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -49,6 +49,7 @@ const std::vector<Expectation> kModels = {
     {"obj_garbage.obj", 1, "no triangles"},
     {"obj_empty.obj", 1, "cannot read model"},
     {"obj_infinite_vertex.obj", 1, "non-finite"},
+    {"obj_mtl_before_newmtl.obj", 1, "line 2 says 'map_Kd' before any 'newmtl'"},
     // Fallbacks.
     {"gltf_bad_indices.gltf", 0, "out-of-range indices. Those faces were dropped"},
     {"gltf_missing_texture.gltf", 0, "nothere.png' of material 'material 0' not found"},

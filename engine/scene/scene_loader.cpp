@@ -7,7 +7,6 @@
 #include <cctype>
 #include <cmath>
 #include <cstdlib>
-#include <fstream>
 #include <limits>
 #include <numbers>
 #include <unordered_map>
@@ -24,6 +23,7 @@
 #include "core/error.hpp"
 #include "core/log.hpp"
 #include "core/vector_text.hpp"
+#include "scene/file_precheck.hpp"
 #include "scene/material_import.hpp"
 #include "scene/mesh_cleanup.hpp"
 
@@ -61,29 +61,6 @@ glm::dvec3 transformPoint(const glm::dmat4& m, const glm::dvec3& p) {
 
 glm::dvec3 transformDirection(const glm::dmat4& m, const glm::dvec3& d) {
     return glm::dmat3(m) * d;
-}
-
-// A GLB's header and chunk headers against the file's real size. Assimp allocates a chunk's
-// declared length before reading it, so an 84-byte file declaring a 4 GiB chunk asked for 4 GiB.
-void checkGlbSizes(const fs::path& path, const std::string& source) {
-    std::ifstream in(path, std::ios::binary);
-    std::uint32_t header[3] = {0, 0, 0};
-    if (!in.read(reinterpret_cast<char*>(header), sizeof header) || header[0] != 0x46546C67u) return;  // not GLB: Assimp decides
-    std::error_code ec;
-    const std::uint64_t size = fs::file_size(path, ec);
-    if (ec) return;
-    if (header[2] > size)
-        fail("cannot read model '", source, "': the GLB header declares ", header[2], " bytes but the file has ", size,
-             " (truncated or corrupt)");
-    std::uint64_t offset = 12;
-    std::uint32_t chunk[2];
-    while (offset + 8 <= header[2] && in.read(reinterpret_cast<char*>(chunk), sizeof chunk)) {
-        if (offset + 8 + std::uint64_t(chunk[0]) > header[2])
-            fail("cannot read model '", source, "': a GLB chunk at byte ", offset, " declares ", chunk[0],
-                 " bytes, beyond the file's ", header[2], " (truncated or corrupt)");
-        offset += 8 + std::uint64_t(chunk[0]);
-        in.seekg(std::streamoff(offset));
-    }
 }
 
 bool isGltf(const fs::path& path) {
@@ -527,7 +504,7 @@ Scene loadModelFile(const fs::path& path, const LoadOptions& options) {
         fail("model path '", path.string(),
              "' is a folder, not a model file; give the .gltf/.glb/.obj file inside it");
     const std::string source = path.string();
-    checkGlbSizes(path, source);
+    precheckModelFile(path);
 
     Assimp::Importer importer;
     // Generated normals are smoothed only across edges flatter than 80°: a box made of shared

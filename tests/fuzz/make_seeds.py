@@ -71,3 +71,5 @@ for name, mode in [('gltf_bad_indices.gltf', 0), ('gltf_node_cycle.gltf', 0), ('
                    ('obj_negative_index.obj', 2), ('obj_bad_texcoord_refs.obj', 2), ('png_huge_dims.png', 3)]:
     with open(os.path.join(bad, name), 'rb') as f:
         seed(name, mode, f.read())
+# The first crash fuzz_loader found (a texture statement before any newmtl), kept as a regression seed.
+seed('obj_mtl_before_newmtl.obj', 2, 'mtllib model.mtl\nv 0 0 0\nv 1 0 0\nv 1 1 0\nf 1 2 3\n#MTL\nmap_Kd tex.png\n')

@@ -102,6 +102,9 @@ write('obj_unknown_material.obj', 'mtllib bad.mtl\nusemtl nosuch\n' + quad + 'f 
 write('obj_bad_mtl.obj', 'mtllib bad.mtl\nusemtl broken\n' + quad + 'f 1/1 2/2 3/3\nf 1/1 3/3 4/4\n')
 write('bad.mtl', 'newmtl broken\nKd nan 0.5 inf\nKe -4 1e999 0\nd nan\nmap_Kd png_truncated.png\nmap_d png_wrong_magic.png\n'
       '\x00\x01\x02 garbage line\nnewmtl\n')
+# Assimp 5.2 crashes on a texture statement before any newmtl (found by tests/fuzz).
+write('obj_mtl_before_newmtl.obj', 'mtllib before_newmtl.mtl\nusemtl late\n' + quad + 'f 1 2 3\nf 1 3 4\n')
+write('before_newmtl.mtl', '# a texture with no material yet\nmap_Kd png_truncated.png\nnewmtl late\nKd 1 1 1\n')
 write('obj_bad_texcoord_refs.obj', quad + 'vn 0 0 1\nf 1/9/9 2/10/1 3/3/77\nf 1/1 3/3 4/4\n')
 
 write('png_truncated.png', good_png[:40])
