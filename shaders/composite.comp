@@ -63,8 +63,10 @@ void main() {
         ldr = hdr;
     } else {
         hdr = texelFetch(uDirect, pixel, 0).rgb;
+        // The direct AOV is what the reference's --direct-out holds: emission of the surface seen
+        // plus light arriving straight from the lights.
+        if (!sky) hdr += texelFetch(uEmissive, pixel, 0).rgb;
         if (uAov == AOV_FINAL && !sky) {
-            hdr += texelFetch(uEmissive, pixel, 0).rgb;
             // Lambertian: outgoing radiance = ρ/π × irradiance, added with weight exactly uGiScale.
             if (uHasIndirect != 0)
                 hdr += uGiScale * texelFetch(uAlbedo, pixel, 0).rgb / 3.14159265358979 * texelFetch(uIndirect, pixel, 0).rgb;

@@ -409,6 +409,30 @@ TEST(PathTracer, EngineDirectLightMatchesReferenceOnSponza) {
     EXPECT_NEAR(main.meanRatioLit, 1.0, 0.05);
 }
 
+// An emissive panel over a sunlit floor (OBJ + MTL, Ke): the engine's direct AOV holds what the
+// reference's bounces-0 image holds, emission of the surface seen included. Emissive triangles
+// light nothing here on either side (the reference does not light-sample them, and bounce 0 has
+// no indirect light), so the two images must agree pixel by pixel.
+TEST(PathTracer, EngineDirectAovIncludesEmissionLikeTheReference) {
+    const auto dir = test::testDir();
+    {
+        std::ofstream mtl(dir / "glow.mtl");
+        mtl << "newmtl floor\nKd 0.7 0.7 0.7\nnewmtl glow\nKd 0 0 0\nKe 3 1.5 0.5\n";
+        std::ofstream obj(dir / "glow.obj");
+        obj << "mtllib glow.mtl\n"
+               "v -2 0 -2\nv 2 0 -2\nv 2 0 2\nv -2 0 2\n"
+               "v -1 0.5 -1\nv 1 0.5 -1\nv 1 1.5 -1\nv -1 1.5 -1\n"
+               "usemtl floor\nf 1 4 3\nf 1 3 2\n"
+               "usemtl glow\nf 5 6 7\nf 5 7 8\n";
+    }
+    const Agreement g = engineVsReference("--scene " + path(dir / "glow.obj") + " --eye 0,2.5,5 --target 0,0.5,0", 96,
+                                          72, dir, "glow");
+    EXPECT_GT(g.lit, 2000u);
+    EXPECT_LT(g.medianLit, 0.01);
+    EXPECT_GT(g.within5Lit, 0.95);
+    EXPECT_NEAR(g.meanRatioLit, 1.0, 0.01);
+}
+
 // Alpha-masked materials are holes for every kind of ray: a quad whose texture is transparent
 // on its left half (alpha 0) and opaque on its right, floating above a floor.
 TEST(PathTracer, AlphaMaskedHolesPassCameraAndShadowRays) {
