@@ -2,18 +2,29 @@
 layout(local_size_x = 8, local_size_y = 8) in;
 // inject: every texel of a light-view map is a photon. It finds the voxel containing its surface
 // point and adds its reflected flux ρ·Φ (W) to the voxel's 64-bit fixed-point sums; the voxel is
-// marked touched. radiance_normalize later divides by π × the voxel's surface area.
+// marked touched, and the photon's lit-side normal is summed (which way the light leaves).
+// radiance_normalize later divides by π × the voxel's surface area.
 #include "voxel_common.glsl"
 #include "octree.glsl"
 #include "radiance_common.glsl"
 
 layout(binding = 0) uniform sampler2D uLightPosition;  // scene-local, w = 0: no surface
 layout(binding = 1) uniform sampler2D uLightFlux;      // reflected flux per texel / the light's largest
+layout(binding = 2) uniform sampler2D uLightNormal;    // unit normal on the side facing the light
 layout(std430, binding = 9) buffer CellArea { float cellArea[]; };
 
 uniform vec3 uVoxelOrigin;  // scene-local position of voxel (0,0,0)
 uniform float uVoxelScale;  // voxels per scene-local unit
 uniform float uUnitsPerRelativeFlux;  // fixed-point units of this light's largest texel flux (≤ 2^24)
+
+// Integer sums only, so the result does not depend on the order of the photons.
+void addPhoton(uint node, vec3 units, ivec3 litNormal) {
+    uint index = (node - uLevelStart[uLevels]) * ACCUMULATOR_WORDS;
+    for (uint c = 0u; c < 3u; ++c) accumulate64(index + 2u * c, uint(round(units[c])));
+    for (uint c = 0u; c < 3u; ++c) atomicAdd(radianceAccumulator[index + 6u + c], uint(litNormal[c]));
+    atomicAdd(radianceAccumulator[index + 9u], 1u);
+    touch(node, uLevels);
+}
 
 void main() {
     ivec2 texel = ivec2(gl_GlobalInvocationID.xy);
@@ -55,12 +66,7 @@ void main() {
     }
     // Clamped so that even an albedo far above 1 (a broken material) cannot wrap a word.
     vec3 units = min(flux * uUnitsPerRelativeFlux, vec3(2147483648.0));
-    uint index = (node - uLevelStart[uLevels]) * 6u;
-    for (uint c = 0u; c < 3u; ++c) accumulate64(index + 2u * c, uint(round(units[c] * share)));
-    touch(node, uLevels);
-    if (other != NONE && share < 1.0) {
-        index = (other - uLevelStart[uLevels]) * 6u;
-        for (uint c = 0u; c < 3u; ++c) accumulate64(index + 2u * c, uint(round(units[c] * (1.0 - share))));
-        touch(other, uLevels);
-    }
+    ivec3 litNormal = ivec3(round(normalize(texelFetch(uLightNormal, texel, 0).xyz) * LIT_NORMAL_SCALE));
+    addPhoton(node, units * share, litNormal);
+    if (other != NONE && share < 1.0) addPhoton(other, units * (1.0 - share), litNormal);
 }

@@ -4,7 +4,9 @@ layout(local_size_x = 64) in;
 //   L = Σ ρ·Φ / (π · A) + L_emitted      (A: the voxel's surface area in scene units²),
 // stored weighted by the voxel's optical depth τ (voxel_common.glsl): (L·τ, τ), the form the
 // brick filters and the cone tracer use. Unlit parts of the surface count as
-// dark because A is the whole surface inside the voxel, lit or not.
+// dark because A is the whole surface inside the voxel, lit or not. Beside it, the direction the
+// reflected light leaves in (cellDirection), which cone_trace uses to let a surface light only
+// what lies in front of its lit side.
 #define WORK_LIST_TOUCHED
 #include "voxel_common.glsl"
 #include "octree.glsl"
@@ -29,13 +31,23 @@ void main() {
     double area = double(cellArea[cell]);
     if (area > 0.0lf)
         for (uint c = 0u; c < 3u; ++c) {
-            uint index = cell * 6u + 2u * c;
+            uint index = cell * ACCUMULATOR_WORDS + 2u * c;
             double units = double(radianceAccumulator[index]) + 4294967296.0lf * double(radianceAccumulator[index + 1u]);
             radiance[c] = float(units * uRadiancePerUnit / area);
         }
-    if (uHasEmissive != 0) {
-        radiance += cellEmissive[cell].rgb;
-    }
+    vec3 emitted = uHasEmissive != 0 ? cellEmissive[cell].rgb : vec3(0.0);
+    // Which way the reflected light leaves: the photons' mean lit-side normal (length < 1 where
+    // they disagree, e.g. a thin wall lit from both sides). Emission leaves both ways, so the
+    // direction is shortened by the emitted share of the radiance.
+    uint base = cell * ACCUMULATOR_WORDS;
+    uint photons = radianceAccumulator[base + 9u];
+    vec3 direction = vec3(0.0);
+    if (photons > 0u)
+        direction = vec3(int(radianceAccumulator[base + 6u]), int(radianceAccumulator[base + 7u]),
+                         int(radianceAccumulator[base + 8u])) / (LIT_NORMAL_SCALE * float(photons));
+    float reflectedShare = dot(radiance, vec3(1.0)) / max(dot(radiance + emitted, vec3(1.0)), 1e-30);
+    direction *= reflectedShare;
     float tau = opticalDepth(unpackUnorm4x8(cellAlbedo[cell]).a);
-    cellRadiance[cell] = vec4(radiance * tau, tau);
+    cellRadiance[cell] = vec4((radiance + emitted) * tau, tau);
+    cellDirection[cell] = vec4(direction * tau, tau);
 }

@@ -152,6 +152,28 @@ TEST(Gi, OpenHemisphereSeesNothing) {
     EXPECT_GT(windowMean(ao, 16, 16, 4, 1), 0.97);
 }
 
+TEST(Gi, ALitFloorDoesNotLightItself) {
+    // A wide sunlit floor and nothing else: every point of it sees only sky, so its indirect light
+    // is 0. Its voxels are lit, and a thin surface fills the coarse node it lies in, so the tilted
+    // cones' coarse samples reach the floor itself; the radiance's direction (the photons' lit
+    // side, facing up) keeps them from gathering it.
+    const auto dir = test::testDir();
+    test::ObjWriter obj;
+    obj.material("white", glm::vec3(0.8f));
+    obj.floor(0.0f, 2.0f);
+    obj.floor(2.0f, 0.01f, 1.9f, 1.9f);  // specks that make the volume a cube around the floor
+    obj.floor(-2.0f, 0.01f, -1.9f, -1.9f);
+    const auto model = obj.write(dir);
+    const std::string view = " --scene " + model.string() +
+                             " --voxel-levels 6 --eye 0,1.5,0.001 --target 0,0,0 --fov 40 --width 32 --height 32"
+                             " --sun-dir 0,-1,0 --sun-irradiance 3";
+    const ImageF indirect = renderCli(dir, "indirect", view + " --aov indirect");
+    const double directRadiance = 0.8 / glm::pi<double>() * 3.0;
+    const double selfLit = windowMean(indirect, 16, 16, 8, 1) / (glm::pi<double>() * directRadiance);
+    std::printf("[ gi       ] lit floor alone: indirect irradiance %.4f of pi*L\n", selfLit);
+    EXPECT_LT(selfLit, 0.01);  // 0.032 before the direction was used
+}
+
 TEST(Gi, InjectionStoresLambertRadianceAndHalfForHalfShadowedVoxels) {
     // Plane y = 0 under a sun at θ; a blocker above casts a shadow edge through the middle of a
     // column of voxels. Read the voxel radiance back.

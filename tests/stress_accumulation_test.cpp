@@ -128,7 +128,7 @@ TEST(StressAccumulation, MillionsOfPhotonsInOneVoxelStoreTheRightRadiance) {
     const auto radiance = readBuffer<glm::vec4>(renderer.radiance()->cellRadiance, octree.cellCount());
     const auto coords = readBuffer<std::uint32_t>(octree.coord, octree.totalCount);
     const auto area = readBuffer<float>(octree.cellArea, octree.cellCount());
-    const auto sums = readBuffer<std::uint32_t>(renderer.radiance()->accumulators, std::size_t(octree.cellCount()) * 6);
+    const auto sums = readBuffer<std::uint32_t>(renderer.radiance()->accumulators, std::size_t(octree.cellCount()) * kAccumulatorWords);
     EXPECT_EQ(renderer.statistics().photonsMissed, 0u);
 
     // The lit texels and their flux, exactly as the light-view map defines them.
@@ -159,11 +159,11 @@ TEST(StressAccumulation, MillionsOfPhotonsInOneVoxelStoreTheRightRadiance) {
     const double stored = radiance[found].x / radiance[found].w;
     EXPECT_NEAR(stored, expected, 0.01 * expected);
     EXPECT_NEAR(area[found], 1.0, 2e-3) << "the floor crosses the whole voxel";
-    EXPECT_GT(sums[std::size_t(found) * 6 + 1], 0u) << "the sum needs the high word (carries into 64 bits)";
+    EXPECT_GT(sums[std::size_t(found) * kAccumulatorWords + 1], 0u) << "the sum needs the high word (carries into 64 bits)";
     std::printf("[ accumulate] %zu photons in one voxel (flux %.6f W, analytic %.6f): radiance %.5f, expected %.5f "
                 "(%.3f %%); red sum %.3g units\n",
                 photons, flux, analytic, stored, expected, 100.0 * (stored / expected - 1.0),
-                double(sums[std::size_t(found) * 6]) + 4294967296.0 * sums[std::size_t(found) * 6 + 1]);
+                double(sums[std::size_t(found) * kAccumulatorWords]) + 4294967296.0 * sums[std::size_t(found) * kAccumulatorWords + 1]);
 }
 
 TEST(StressAccumulation, ImagesScaleLinearlyWithLightIntensity) {

@@ -45,10 +45,13 @@ std::vector<std::pair<std::string, std::vector<std::uint8_t>>> snapshot(const Sc
     buffer("cell area", o.cellArea, std::size_t(o.cellCount()) * 4);
     buffer("node raw values", o.rawValue, std::size_t(o.nodeCount) * 16);
     texture("albedo bricks", o.brickAlbedo.id());
-    buffer("photon sums", r.accumulators, std::size_t(o.cellCount()) * 24);
+    buffer("photon sums", r.accumulators, std::size_t(o.cellCount()) * 4 * kAccumulatorWords);
     buffer("cell radiance", r.cellRadiance, std::size_t(o.cellCount()) * 16);
     buffer("node raw radiance", r.rawRadiance, std::size_t(o.nodeCount) * 16);
     texture("radiance bricks", r.brickRadiance.id());
+    buffer("cell radiance direction", r.cellDirection, std::size_t(o.cellCount()) * 16);
+    buffer("node raw radiance direction", r.rawDirection, std::size_t(o.nodeCount) * 16);
+    texture("radiance direction bricks", r.brickDirection.id());
     for (Aov aov : {Aov::Final, Aov::Indirect}) {
         settings.display.aov = aov;
         renderer.setSettings(settings);

@@ -15,6 +15,7 @@ void bindRadianceVolume(const RadianceVolume& v) {
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 17, v.borderList.id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 18, v.cellRadiance.id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 19, v.indirectArgs.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 23, v.cellDirection.id());
 }
 
 void ListDispatch::dispatch(const RadianceVolume& volume, unsigned countSlot) {
@@ -23,7 +24,10 @@ void ListDispatch::dispatch(const RadianceVolume& volume, unsigned countSlot) {
     glUseProgram(args_.id());
     gl::setUniform(args_.id(), "uCountSlot", countSlot);
     gl::setUniform(args_.id(), "uArgsSlot", countSlot);
-    bindRadianceVolume(volume);
+    // Only what indirect_args.comp reads: the caller's other bindings (e.g. which channel's cell
+    // values sit at binding 18) must survive to its own dispatch.
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 6, volume.listCounts.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 19, volume.indirectArgs.id());
     glDispatchCompute(1, 1, 1);
     glMemoryBarrier(GL_COMMAND_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);
     glUseProgram(GLuint(current));

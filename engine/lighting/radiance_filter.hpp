@@ -4,6 +4,8 @@
 //           touched node its partial radiance brick (bricks_leaf / bricks_mip, RADIANCE variant).
 //   border: the nodes sharing a brick sample with a touched node (3³ neighbourhood, via the
 //           neighbour links and the octree) get their complete samples, so borders agree.
+// Both filter two channels through the same nodes: the radiance and the direction its reflected
+// part leaves in (radiance_volume.hpp).
 // DESIGN lists border before mip because the classic scheme completes leaf borders first; here
 // parents filter the children's *partial* bricks (brick_layout.hpp), which needs no completed
 // borders, so all levels are completed last in one pass each.
@@ -20,7 +22,7 @@ public:
 
 private:
     gl::Program touchParents_, leaf_, parent_, touchBorder_;
-    BrickCompletion completion_;
+    BrickCompletion completion_, directionCompletion_;
     ListDispatch listDispatch_;
 };
 

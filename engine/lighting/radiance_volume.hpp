@@ -11,11 +11,15 @@
 
 namespace vct {
 
+constexpr int kAccumulatorWords = 10;  // ACCUMULATOR_WORDS in shaders/radiance_common.glsl
+
 struct RadianceVolume {
-    // Per voxel (cell): 64-bit fixed-point sums of reflected flux (R, G, B: low, high words) and
-    // the resulting premultiplied radiance (L·α, α).
-    gl::Buffer accumulators;  // 6 uints per cell
+    // Per voxel (cell): 64-bit fixed-point sums of reflected flux (R, G, B: low, high words), the
+    // sums of the photons' lit-side normals and their count (radiance_common.glsl), and the
+    // resulting premultiplied radiance (L·τ, τ) and direction the reflected light leaves in (N·τ, τ).
+    gl::Buffer accumulators;  // kAccumulatorWords uints per cell
     gl::Buffer cellRadiance;  // vec4 per cell (touched ones; the rest 0: read opacity from the octree)
+    gl::Buffer cellDirection; // vec4 per cell, likewise
 
     // Touched nodes: a flag per node (all levels and the cells) and, per level, the list of the
     // touched nodes stored at [levelStart[l], levelStart[l] + count[l]) of `touchedList`.
@@ -32,6 +36,10 @@ struct RadianceVolume {
     // bright light into Inf (and the image into NaN).
     gl::Texture brickRadiance;
     gl::Buffer rawRadiance;              // vec4 per node: mean over its cells
+    // The direction, filtered through the same nodes into its own pool (RGBA16F: |N·τ| ≤ 6.9).
+    std::vector<PartialBricks> partialDirection;
+    gl::Texture brickDirection;
+    gl::Buffer rawDirection;
 
     double wattsPerUnit = 0.0;  // fixed point of the photon sums (fluxWattsPerUnit, inject.hpp)
 

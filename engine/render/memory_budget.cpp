@@ -45,7 +45,9 @@ std::size_t estimateVoxelBytes(const Scene& scene, int levels, bool radiance) {
     double bytes = fragments * (16 + 4) + cells * (16 + 16 + 64 + (emissive ? 16 : 0)) +
                    nodes * (16 + 24 + 27 * 8 + 16 + 27 * 16);
     bytes += cells * 16;  // node pool entries of the voxels themselves
-    if (radiance) bytes += cells * (24 + 16 + 8) + nodes * (8 + 8 + 16 + 27 * 16 + 27 * 16);
+    // Radiance: accumulators, cell radiance and direction, flags; per node raw values, partial
+    // bricks and pool samples of radiance (RGBA32F) and its direction (partials RGBA32F, pool RGBA16F).
+    if (radiance) bytes += cells * (40 + 16 + 16 + 8) + nodes * (8 + 8 + 16 + 16 + 27 * 16 * 2 + 27 * 16 + 27 * 8);
     return std::size_t(bytes * 1.1);  // brick pools are rounded up to whole rows and slabs
 }
 
