@@ -4,7 +4,8 @@ layout(local_size_x = 64) in;
 // P(q) = 1/8 · Σ V(c) over the node's cells c whose closed cube contains q, V = (ρ·α, α).
 // Also the node's raw value: the mean of V over its 8 cells.
 // Variants: RADIANCE reads the voxels' premultiplied radiance instead of albedo (and with
-// WORK_LIST_TOUCHED runs only over the touched leaves).
+// WORK_LIST_TOUCHED runs only over the touched leaves); OPACITY reads the opacity by axis bound
+// at 7 instead, V = (τx, τy, τz, τ).
 #include "voxel_common.glsl"
 #include "octree.glsl"
 #include "bricks_common.glsl"
@@ -33,8 +34,12 @@ void main() {
             v = cellRadiance[cell - uLevelStart[uLevels]];
 #else
             vec4 albedo = unpackUnorm4x8(cellAlbedo[cell - uLevelStart[uLevels]]);
+#ifdef OPACITY
+            v = vec4(opticalDepth(albedo.x), opticalDepth(albedo.y), opticalDepth(albedo.z), opticalDepth(albedo.w));
+#else
             float tau = opticalDepth(albedo.a);
             v = vec4(albedo.rgb * tau, tau);
+#endif
 #endif
         }
         cells[slot] = v;

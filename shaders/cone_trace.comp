@@ -11,17 +11,18 @@ layout(local_size_x = 8, local_size_y = 8) in;
 
 layout(binding = 0) uniform sampler2D uNormal;
 layout(binding = 1) uniform sampler2D uPosition;
-// Radiance (premultiplied L·α, zero where no light arrived) and opacity come from two pools with
-// the same layout: unlit geometry must still block cones, so opacity is the geometry's (the
-// albedo pool's α), never the radiance pool's.
+// Radiance (premultiplied L·τ, zero where no light arrived) and opacity come from pools with the
+// same layout: unlit geometry must still block cones, so opacity is the geometry's (the opacity
+// pool), never the radiance pool's.
 layout(binding = 2) uniform sampler3D uBrickRadiance;
-layout(binding = 3) uniform sampler3D uBrickAlbedo;
+layout(std430, binding = 12) buffer RawRadiance { vec4 rawRadiance[]; };
 // Which way each voxel's reflected light leaves: (N·τ, τ) with N the mean lit-side normal
 // (radiance_normalize), same layout as the radiance pool.
 layout(binding = 4) uniform sampler3D uBrickDirection;
 layout(std430, binding = 24) buffer RawDirection { vec4 rawDirection[]; };
-layout(std430, binding = 12) buffer RawRadiance { vec4 rawRadiance[]; };
-layout(std430, binding = 20) buffer RawAlbedo { vec4 rawAlbedo[]; };
+// Optical depth by axis (τx, τy, τz, τ) of the geometry (octree.hpp), same layout.
+layout(binding = 5) uniform sampler3D uBrickOpacity;
+layout(std430, binding = 26) buffer RawOpacity { vec4 rawOpacity[]; };
 layout(rgba32f, binding = 0) uniform writeonly image2D uIndirect;
 // What the pass did and saved, as 64-bit counts (low, high): samples taken, samples that empty-
 // space skipping saved (the steps the skipped nodes would have cost), pixels that saw the sky.
@@ -59,6 +60,17 @@ uniform float uVoxelScale;
 float facingShare(vec4 direction, vec3 coneDirection) {
     vec3 n = direction.a > 1e-6 ? direction.rgb / direction.a : vec3(0.0);
     return clamp(1.0 - 0.5 * length(n) + 8.0 * dot(n, -coneDirection), 0.0, 1.0);
+}
+
+// What a cone travelling along coneDirection sees of a sample: (L·τ(d)·share, τ(d)). The optical
+// depth depends on the direction, τ(d) = Σ|d_a|·τ_a from the surface's area projected along each
+// axis (octree.hpp): a floor blocks a cone crossing it but not one running along it, so a surface
+// no longer blocks the cones that start on it through the coarse levels (which made surfaces the
+// lights do not reach 0.6× too dark). The radiance L is the pool's L·τ over the geometry's τ.
+vec4 directionalSample(vec3 radianceTimesTau, vec4 direction, vec4 opacity, vec3 coneDirection) {
+    float tau = dot(abs(coneDirection), opacity.xyz);
+    vec3 radiance = opacity.w > 1e-6 ? radianceTimesTau / opacity.w : vec3(0.0);
+    return vec4(radiance * tau * facingShare(direction, coneDirection), tau);
 }
 
 // The coarser of the two levels sampled for a footprint of 2^lod voxels.
@@ -99,15 +111,15 @@ bool sampleRadiance(vec3 p, float lod, vec3 origin, vec3 direction, vec3 invDire
     for (int k = 0; k < 2; ++k) {
         if (nodes[k] == NONE) continue;
         if (uUseBricks == 0) {
-            samples[k] = vec4(rawRadiance[nodes[k]].rgb * facingShare(rawDirection[nodes[k]], direction),
-                              rawAlbedo[nodes[k]].a);
+            samples[k] = directionalSample(rawRadiance[nodes[k]].rgb, rawDirection[nodes[k]], rawOpacity[nodes[k]],
+                                           direction);
             continue;
         }
         float size = float(1 << (uLevels - levels[k]));
         vec3 local = clamp((p - vec3(unpackCell(nodeCoord[nodes[k]])) * size) / size, 0.0, 1.0);
         vec3 uvw = (vec3(brickOrigin(nodes[k])) + 0.5 + local * 2.0) / vec3(textureSize(uBrickRadiance, 0));
-        samples[k] = vec4(texture(uBrickRadiance, uvw).rgb * facingShare(texture(uBrickDirection, uvw), direction),
-                          texture(uBrickAlbedo, uvw).a);
+        samples[k] = directionalSample(texture(uBrickRadiance, uvw).rgb, texture(uBrickDirection, uvw),
+                                       texture(uBrickOpacity, uvw), direction);
     }
     value = fineLevel == coarseLevel ? samples[1] : mix(samples[0], samples[1], blend);
     return true;

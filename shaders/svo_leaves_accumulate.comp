@@ -5,7 +5,8 @@ layout(local_size_x = 64) in;
 // are bit-identical whatever the order in which thousands of fragments of one cell arrive.
 //   albedo: 8-bit channels summed in 32 bits (exact up to 16.8 M fragments per cell)
 //   normal: components × 127 summed as two's-complement 32-bit integers
-//   area, emission: 64-bit fixed point (low word, then a carry into the high word)
+//   area, emission, and (in uProjectedArea) the area projected along x, y, z (area·|n_a|):
+//   64-bit fixed point (low word, then a carry into the high word)
 #include "voxel_common.glsl"
 #include "octree.glsl"
 
@@ -13,6 +14,7 @@ layout(rgba32ui, binding = 0) uniform readonly uimageBuffer uFragments;
 layout(r32ui, binding = 1) uniform readonly uimageBuffer uFragmentNode;  // the fragment's cell node
 layout(std430, binding = 21) buffer Materials { vec4 materials[]; };  // {baseColor, emissive} per material
 layout(r32ui, binding = 3) uniform uimageBuffer uAccumulators;  // ACC_FIELDS per cell
+layout(r32ui, binding = 4) uniform uimageBuffer uProjectedArea;  // 6 per cell: x, y, z, 64-bit each
 
 uniform uint uFragmentCount;
 uniform int uHasEmissive;
@@ -45,6 +47,13 @@ void main() {
     imageAtomicAdd(uAccumulators, base + 5, uint(normal.y));
     imageAtomicAdd(uAccumulators, base + 6, uint(normal.z));
     add64(base + 7, uint(round(area * AREA_SCALE)));
+    vec3 projected = area * abs(unpackNormal(fragment.z));
+    for (int c = 0; c < 3; ++c) {
+        uint value = uint(round(projected[c] * AREA_SCALE));
+        int index = int(cell) * 6 + 2 * c;
+        uint old = imageAtomicAdd(uProjectedArea, index, value);
+        if (old + value < old) imageAtomicAdd(uProjectedArea, index + 1, 1u);
+    }
     if (uHasEmissive != 0) {
         vec3 emission = materials[2u * material + 1u].rgb;
         for (int c = 0; c < 3; ++c) add64(base + 9 + 2 * c, uint(round(max(emission[c], 0.0) * uEmissiveScale)));

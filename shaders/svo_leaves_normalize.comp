@@ -1,11 +1,13 @@
 #version 450
 layout(local_size_x = 64) in;
 // svo_leaves, step 2: per cell, turn the integer sums into values: mean albedo, opacity
-// α = min(1, area in voxel-face units), mean normal, area, mean emission (brick_layout.hpp).
+// α = min(1, area in voxel-face units), mean normal, area, mean emission (brick_layout.hpp), and
+// the opacity by axis from the projected areas.
 #include "voxel_common.glsl"
 #include "octree.glsl"
 
 layout(r32ui, binding = 3) uniform readonly uimageBuffer uAccumulators;
+layout(r32ui, binding = 4) uniform readonly uimageBuffer uProjectedArea;  // 6 per cell
 layout(std430, binding = 6) buffer Status { uint overflowCells; uint maxFragmentsInCell; };
 layout(std430, binding = 7) buffer CellAlbedo { uint cellAlbedo[]; };    // RGBA8: albedo, opacity
 layout(std430, binding = 8) buffer CellNormal { uint cellNormal[]; };    // octahedral
@@ -14,6 +16,8 @@ layout(std430, binding = 10) buffer CellFragments { uint cellFragments[]; };
 // Float, not half: emission may be anything from 1e-9 to 1e9 W/(m²·sr) (half floats flushed dim
 // emission to 0 and turned bright emission into Inf).
 layout(std430, binding = 11) buffer CellEmissive { vec4 cellEmissive[]; };  // RGB, 0
+// Opacity by direction (octree.hpp): a floor blocks a ray crossing it, not one running along it.
+layout(std430, binding = 25) buffer CellOpacity { uint cellOpacity[]; };  // RGBA8 (αx, αy, αz, α)
 
 uniform int uHasEmissive;
 uniform float uEmissiveScale;
@@ -42,6 +46,13 @@ void main() {
     cellAlbedo[cell] = packUnorm4x8(vec4(albedo, min(area, 1.0)));
     cellNormal[cell] = packNormal(dot(normal, normal) > 0.0 ? normalize(normal) : vec3(0.0, 0.0, 1.0));
     cellArea[cell] = area;
+    vec3 projected;
+    for (int c = 0; c < 3; ++c) {
+        int index = int(cell) * 6 + 2 * c;
+        projected[c] = float((double(imageLoad(uProjectedArea, index).x) +
+                              4294967296.0lf * double(imageLoad(uProjectedArea, index + 1).x)) / AREA_SCALE);
+    }
+    cellOpacity[cell] = packUnorm4x8(vec4(min(projected, vec3(1.0)), min(area, 1.0)));
     cellFragments[cell] = count;
     if (uHasEmissive != 0) {
         vec3 emission = vec3(float(load64(base + 9)), float(load64(base + 11)), float(load64(base + 13))) /

@@ -45,6 +45,9 @@ std::vector<std::pair<std::string, std::vector<std::uint8_t>>> snapshot(const Sc
     buffer("cell area", o.cellArea, std::size_t(o.cellCount()) * 4);
     buffer("node raw values", o.rawValue, std::size_t(o.nodeCount) * 16);
     texture("albedo bricks", o.brickAlbedo.id());
+    buffer("cell opacity by axis", o.cellOpacity, std::size_t(o.cellCount()) * 4);
+    buffer("node raw opacity by axis", o.rawOpacity, std::size_t(o.nodeCount) * 16);
+    texture("opacity bricks", o.brickOpacity.id());
     buffer("photon sums", r.accumulators, std::size_t(o.cellCount()) * 4 * kAccumulatorWords);
     buffer("cell radiance", r.cellRadiance, std::size_t(o.cellCount()) * 16);
     buffer("node raw radiance", r.rawRadiance, std::size_t(o.nodeCount) * 16);

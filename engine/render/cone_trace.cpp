@@ -59,11 +59,11 @@ void ConeTrace::render(const GBuffer& gbuffer, const Octree& octree, const Radia
     glBindTextureUnit(0, gbuffer.normal());
     glBindTextureUnit(1, gbuffer.position());
     glBindTextureUnit(2, radiance.brickRadiance.id());
-    glBindTextureUnit(3, octree.brickAlbedo.id());
     glBindTextureUnit(4, radiance.brickDirection.id());
+    glBindTextureUnit(5, octree.brickOpacity.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 26, octree.rawOpacity.id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 24, radiance.rawDirection.id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 12, radiance.rawRadiance.id());
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 20, octree.rawValue.id());
     glBindImageTexture(0, indirect_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
     const std::uint32_t zero = 0;
     glClearNamedBufferData(counters_.id(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);

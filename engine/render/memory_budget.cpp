@@ -42,8 +42,9 @@ std::size_t estimateVoxelBytes(const Scene& scene, int levels, bool radiance) {
     for (const Material& m : scene.materials) emissive = emissive || m.emissive != glm::vec3(0.0f);
     // Bytes per fragment, occupied voxel and interior node of the pools (voxel/octree.hpp,
     // lighting/radiance_volume.hpp); the temporary cell accumulators of svo_leaves included.
-    double bytes = fragments * (16 + 4) + cells * (16 + 16 + 64 + (emissive ? 16 : 0)) +
-                   nodes * (16 + 24 + 27 * 8 + 16 + 27 * 16);
+    // Two geometry pools (albedo, opacity by axis) of 27 RGBA16F samples and a raw value per node.
+    double bytes = fragments * (16 + 4) + cells * (16 + 16 + 4 + 64 + 24 + (emissive ? 16 : 0)) +
+                   nodes * (16 + 24 + 2 * (27 * 8 + 16) + 27 * 16);
     bytes += cells * 16;  // node pool entries of the voxels themselves
     // Radiance: accumulators, cell radiance and direction, flags; per node raw values, partial
     // bricks and pool samples of radiance (RGBA32F) and its direction (partials RGBA32F, pool RGBA16F).

@@ -35,13 +35,19 @@ void allocateBrickPool(Octree& octree) {
     if (z > maxBricksPerAxis)
         fail("the octree has ", bricks, " nodes, more bricks than a ", max3D, "³ texture holds; lower --voxel-levels");
     octree.brickPoolBricks = {side, side, z};
-    octree.brickAlbedo = gl::createTexture(GL_TEXTURE_3D, "brick pool albedo/opacity");
-    glTextureStorage3D(octree.brickAlbedo.id(), 1, GL_RGBA16F, 3 * side, 3 * side, 3 * z);
-    for (GLenum wrap : {GL_TEXTURE_WRAP_S, GL_TEXTURE_WRAP_T, GL_TEXTURE_WRAP_R})
-        glTextureParameteri(octree.brickAlbedo.id(), wrap, GL_CLAMP_TO_EDGE);
-    glTextureParameteri(octree.brickAlbedo.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-    glTextureParameteri(octree.brickAlbedo.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    auto pool = [&](const char* name) {
+        gl::Texture t = gl::createTexture(GL_TEXTURE_3D, name);
+        glTextureStorage3D(t.id(), 1, GL_RGBA16F, 3 * side, 3 * side, 3 * z);
+        for (GLenum wrap : {GL_TEXTURE_WRAP_S, GL_TEXTURE_WRAP_T, GL_TEXTURE_WRAP_R})
+            glTextureParameteri(t.id(), wrap, GL_CLAMP_TO_EDGE);
+        glTextureParameteri(t.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+        glTextureParameteri(t.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+        return t;
+    };
+    octree.brickAlbedo = pool("brick pool albedo/opacity");
+    octree.brickOpacity = pool("brick pool opacity by axis");
     octree.rawValue = gl::createBuffer(GLsizeiptr(bricks) * 16, nullptr, 0, "node raw values");
+    octree.rawOpacity = gl::createBuffer(GLsizeiptr(bricks) * 16, nullptr, 0, "node raw opacity by axis");
     gl::checkErrors(concat("allocating the brick pool (", 3 * side, "x", 3 * side, "x", 3 * z, " RGBA16F)"));
 }
 

@@ -14,7 +14,14 @@ struct PartialBricks {
 
 PartialBricks createPartialBricks(const Octree& octree, int level);
 
-// Allocates octree.brickAlbedo with one brick per node (levels 0..L−1) and octree.rawValue.
+// The leaf level's partial bricks of the two geometry pools: albedo (brickAlbedo) and opacity by
+// axis (brickOpacity).
+struct LeafPartials {
+    PartialBricks albedo, opacity;
+};
+
+// Allocates octree.brickAlbedo and brickOpacity with one brick per node (levels 0..L−1), and
+// octree.rawValue and rawOpacity.
 void allocateBrickPool(Octree& octree);
 
 class BrickCompletion {

@@ -5,25 +5,35 @@
 
 namespace vct {
 
-Bricks::Bricks() : leaf_(gl::buildProgram({{GL_COMPUTE_SHADER, "bricks_leaf.comp"}})) {}
+Bricks::Bricks()
+    : albedoLeaf_(gl::buildProgram({{GL_COMPUTE_SHADER, "bricks_leaf.comp"}})),
+      opacityLeaf_(gl::buildProgram({{GL_COMPUTE_SHADER, "bricks_leaf.comp"}}, {"OPACITY 1"})) {}
 
-PartialBricks Bricks::run(Octree& octree) {
+LeafPartials Bricks::run(Octree& octree) {
     allocateBrickPool(octree);
     const int leafLevel = octree.levels - 1;
-    PartialBricks partial = createPartialBricks(octree, leafLevel);
-    const GLuint p = leaf_.id();
-    glUseProgram(p);
-    octree.bind(p);
-    setBrickPoolUniforms(p, octree);
-    gl::setUniform(p, "uLevel", leafLevel);
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 7, octree.cellAlbedo.id());
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 12, octree.rawValue.id());
-    glBindImageTexture(0, partial.texture.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
-    gl::dispatch1D(octree.levelCount[leafLevel], 64);
-    glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);
-    completion_.run(octree, partial, octree.brickAlbedo.id());
+    LeafPartials partials{createPartialBricks(octree, leafLevel), createPartialBricks(octree, leafLevel)};
+    struct Channel {
+        GLuint program, cells, raw, pool;
+        const PartialBricks& partial;
+    };
+    const Channel channels[] = {
+        {albedoLeaf_.id(), octree.cellAlbedo.id(), octree.rawValue.id(), octree.brickAlbedo.id(), partials.albedo},
+        {opacityLeaf_.id(), octree.cellOpacity.id(), octree.rawOpacity.id(), octree.brickOpacity.id(), partials.opacity}};
+    for (const Channel& channel : channels) {
+        glUseProgram(channel.program);
+        octree.bind(channel.program);
+        setBrickPoolUniforms(channel.program, octree);
+        gl::setUniform(channel.program, "uLevel", leafLevel);
+        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 7, channel.cells);
+        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 12, channel.raw);
+        glBindImageTexture(0, channel.partial.texture.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+        gl::dispatch1D(octree.levelCount[leafLevel], 64);
+        glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);
+        completion_.run(octree, channel.partial, channel.pool);
+    }
     gl::checkErrors("filling the leaf bricks");
-    return partial;
+    return partials;
 }
 
 }  // namespace vct

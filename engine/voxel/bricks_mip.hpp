@@ -8,7 +8,7 @@ namespace vct {
 class BricksMip {
 public:
     BricksMip();
-    void run(const Octree& octree, PartialBricks leafPartial);
+    void run(const Octree& octree, LeafPartials leafPartials);
 
 private:
     gl::Program program_;

@@ -5,7 +5,7 @@
 namespace vct {
 
 std::size_t Octree::brickPoolBytes() const {
-    return std::size_t(brickPoolBricks.x) * brickPoolBricks.y * brickPoolBricks.z * 27 * 8 + std::size_t(nodeCount) * 16;
+    return 2 * (std::size_t(brickPoolBricks.x) * brickPoolBricks.y * brickPoolBricks.z * 27 * 8 + std::size_t(nodeCount) * 16);
 }
 
 std::size_t Octree::denseTextureBytes() const {

@@ -42,17 +42,23 @@ struct Octree {
     // Cells (level L), levelCount[L] entries each: albedo+opacity RGBA8, normal oct16, area in
     // voxel-face units, fragment count, emission float RGB(A) (only with emissive materials).
     gl::Buffer cellAlbedo, cellNormal, cellArea, cellFragments, cellEmissive;
+    // Opacity by direction, RGBA8 per cell: (αx, αy, αz, α) with α_a = min(1, Σ area·|n_a|), the
+    // surface's area projected along axis a in voxel-face units, and α = min(1, Σ area).
+    gl::Buffer cellOpacity;
     bool hasEmissive = false;
 
     // Bricks: one 3³ brick per node (levels 0..L−1) in a 3D texture, brick index = node index.
     gl::Texture brickAlbedo;  // RGBA16F, premultiplied (ρ·α, α), complete samples (brick_layout.hpp)
     glm::ivec3 brickPoolBricks{0};  // bricks per axis
     gl::Buffer rawValue;            // vec4 per node: mean of (ρ·α, α) over its cells
+    // The same for the optical depth by axis (τx, τy, τz, τ) of cellOpacity: what cones block by.
+    gl::Texture brickOpacity;  // RGBA16F
+    gl::Buffer rawOpacity;
 
     std::uint32_t cellCount() const { return levelCount[levels]; }
     std::size_t nodePoolBytes() const { return std::size_t(totalCount) * 16; }
     std::size_t neighbourBytes() const { return std::size_t(nodeCount) * 24; }
-    std::size_t cellBytes() const { return std::size_t(cellCount()) * (16 + (hasEmissive ? 16 : 0)); }
+    std::size_t cellBytes() const { return std::size_t(cellCount()) * (20 + (hasEmissive ? 16 : 0)); }
     std::size_t brickPoolBytes() const;
     // A dense RGBA16F 3D texture of the same resolution with its full mip chain (for comparison).
     std::size_t denseTextureBytes() const;

@@ -47,9 +47,9 @@ void SvoBuilder::leaves(const GpuScene& gpuScene) {
 
 void SvoBuilder::neighbours() { neighbours_.run(octree_); }
 
-void SvoBuilder::bricks() { leafPartial_ = bricks_.run(octree_); }
+void SvoBuilder::bricks() { leafPartials_ = bricks_.run(octree_); }
 
-void SvoBuilder::bricksMip() { bricksMip_.run(octree_, std::move(leafPartial_)); }
+void SvoBuilder::bricksMip() { bricksMip_.run(octree_, std::move(leafPartials_)); }
 
 VoxelMemoryReport SvoBuilder::memory() const {
     VoxelMemoryReport r;

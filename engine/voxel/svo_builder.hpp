@@ -54,7 +54,7 @@ private:
     Octree octree_;
     LeafStatistics leafStatistics_;
     VoxelGrid grid_;
-    PartialBricks leafPartial_;
+    LeafPartials leafPartials_;
 };
 
 std::string formatVoxelMemory(const VoxelMemoryReport& report);

@@ -7,6 +7,9 @@
 namespace vct {
 namespace {
 constexpr std::uint32_t kAccumulatorFields = 16;  // ACC_FIELDS in the shaders
+// Area projected along x, y, z as 64-bit sums, in a buffer of its own so that the octree's
+// largest cell count stays what the main accumulators' buffer-texture limit allows.
+constexpr std::uint32_t kProjectedFields = 6;
 }
 
 SvoLeaves::SvoLeaves()
@@ -29,6 +32,11 @@ LeafStatistics SvoLeaves::run(const FragmentList& fragments, GLuint fragmentNode
     glClearNamedBufferData(accumulators.id(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
     gl::Texture accumulatorTexture = gl::createTexture(GL_TEXTURE_BUFFER, "cell accumulators");
     glTextureBuffer(accumulatorTexture.id(), GL_R32UI, accumulators.id());
+    gl::Buffer projected =
+        gl::createBuffer(GLsizeiptr(cells) * kProjectedFields * 4, nullptr, GL_DYNAMIC_STORAGE_BIT, "cell projected areas");
+    glClearNamedBufferData(projected.id(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
+    gl::Texture projectedTexture = gl::createTexture(GL_TEXTURE_BUFFER, "cell projected areas");
+    glTextureBuffer(projectedTexture.id(), GL_R32UI, projected.id());
 
     octree.hasEmissive = emissive;
     const float emissiveScale = maxEmission > 0.0f ? 16777216.0f / maxEmission : 0.0f;
@@ -44,6 +52,7 @@ LeafStatistics SvoLeaves::run(const FragmentList& fragments, GLuint fragmentNode
     glBindImageTexture(1, fragmentNodeTexture, 0, GL_FALSE, 0, GL_READ_ONLY, GL_R32UI);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 21, gpuScene.materialBuffer());
     glBindImageTexture(3, accumulatorTexture.id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_R32UI);
+    glBindImageTexture(4, projectedTexture.id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_R32UI);
     gl::dispatch1D(fragments.count, 64);
     glMemoryBarrier(barrier);
 
@@ -52,6 +61,7 @@ LeafStatistics SvoLeaves::run(const FragmentList& fragments, GLuint fragmentNode
     octree.cellNormal = gl::createBuffer(bytes, nullptr, 0, "cell normal");
     octree.cellArea = gl::createBuffer(bytes, nullptr, 0, "cell area");
     octree.cellFragments = gl::createBuffer(bytes, nullptr, 0, "cell fragments");
+    octree.cellOpacity = gl::createBuffer(bytes, nullptr, 0, "cell opacity by axis");
     if (emissive) octree.cellEmissive = gl::createBuffer(bytes * 4, nullptr, 0, "cell emission");
     else octree.cellEmissive.reset();
     gl::Buffer status = gl::createBuffer(8, nullptr, GL_DYNAMIC_STORAGE_BIT, "leaf status");
@@ -64,11 +74,13 @@ LeafStatistics SvoLeaves::run(const FragmentList& fragments, GLuint fragmentNode
     gl::setUniform(p, "uHasEmissive", emissive ? 1 : 0);
     gl::setUniform(p, "uEmissiveScale", emissiveScale);
     glBindImageTexture(3, accumulatorTexture.id(), 0, GL_FALSE, 0, GL_READ_ONLY, GL_R32UI);
+    glBindImageTexture(4, projectedTexture.id(), 0, GL_FALSE, 0, GL_READ_ONLY, GL_R32UI);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 6, status.id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 7, octree.cellAlbedo.id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 8, octree.cellNormal.id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 9, octree.cellArea.id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 10, octree.cellFragments.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 25, octree.cellOpacity.id());
     if (emissive) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 11, octree.cellEmissive.id());
     gl::dispatch1D(cells, 64);
     glMemoryBarrier(barrier | GL_BUFFER_UPDATE_BARRIER_BIT);

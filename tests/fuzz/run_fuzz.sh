@@ -26,9 +26,13 @@ if [ ! -f "$build_dir/CMakeCache.txt" ]; then
     -DVCT_FUZZ=ON -DVCT_BUILD_TESTS=OFF > "$build_dir.configure.log" 2>&1 || { cat "$build_dir.configure.log"; exit 1; }
 fi
 cmake --build "$build_dir" --target fuzz_loader --parallel "$(nproc)"
-mkdir -p "$build_dir/corpus" "$build_dir/artifacts"
-# New inputs go to the build folder's corpus; the committed seeds are only read. Assimp's own
-# leaks on malformed files are suppressed (lsan.supp), vct's are reported.
+# New inputs go to the build folder's corpus; the committed seeds are only read. A run with a fixed
+# number of inputs (-runs=, what ctest does) starts from the committed seeds alone, in a corpus
+# folder emptied first, so that it is reproducible and does not slow down as earlier runs add
+# inputs. Assimp's own leaks on malformed files are suppressed (lsan.supp), vct's are reported.
+corpus="$build_dir/corpus"
+case " $* " in *" -runs="*) corpus="$build_dir/corpus-fixed"; rm -rf "$corpus" ;; esac
+mkdir -p "$corpus" "$build_dir/artifacts"
 export LSAN_OPTIONS="suppressions=$source_dir/tests/fuzz/lsan.supp${LSAN_OPTIONS:+:$LSAN_OPTIONS}"
-"$build_dir/tests/fuzz/fuzz_loader" "$build_dir/corpus" "$source_dir/tests/fuzz/corpus" -max_total_time="$seconds" \
+"$build_dir/tests/fuzz/fuzz_loader" "$corpus" "$source_dir/tests/fuzz/corpus" -max_total_time="$seconds" \
   -rss_limit_mb=2048 -timeout=20 -artifact_prefix="$build_dir/artifacts/" -print_final_stats=1 "$@"
