@@ -23,26 +23,6 @@ Scene unitBoxScene(const std::vector<glm::dvec3>& triangles,
     return makeTriangleScene(triangles, Bounds{glm::dvec3(0.0), glm::dvec3(1.0)}, groups);
 }
 
-// The Cornell box scaled by s about the origin (world-space triangles through the loaders'
-// clean-up), camera and spot alike; the spot's intensity is left as it is.
-Scene scaledCornell(double s) {
-    const Scene unit = makeCornellBox();
-    WorldGeometry g = worldGeometryOf(unit);
-    for (glm::dvec3& p : g.positions) p *= s;
-    Scene scene;
-    scene.name = unit.name;
-    scene.materials = unit.materials;
-    buildSceneGeometry(g, "scaled cornell", false, scene);
-    scene.cameras = unit.cameras;
-    for (Camera& c : scene.cameras) {
-        c.eye *= s;
-        c.target *= s;
-    }
-    scene.lights = unit.lights;
-    for (Light& l : scene.lights) l.position *= s;
-    return scene;
-}
-
 // Largest relative difference between a/ka and b/kb over the values above `floor` × the largest.
 double linearityError(const ImageF& a, double ka, const ImageF& b, double kb, double floor = 1e-3) {
     double peak = 0, worst = 0;
@@ -210,7 +190,7 @@ TEST(StressAccumulation, ExtremeLightsOnExtremeScalesStayLinear) {
     Light sun;
     sun.direction = glm::normalize(glm::dvec3(0.2, -0.6, -1.0));  // in through the open front
     for (const auto& [scale, irradiance] : {std::pair{1e-4, 1e-20}, std::pair{1e15, 1e20}}) {
-        Scene scene = scaledCornell(scale);
+        Scene scene = transformedCornell(scale, glm::dvec3(0.0));  // its lights are replaced below
         auto render = [&](double e) {
             sun.irradiance = e;
             scene.lights = {sun};

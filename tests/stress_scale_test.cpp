@@ -21,29 +21,6 @@ struct Variant {
     glm::dvec3 offset{0.0};
 };
 
-// p → p·s + t for geometry, camera and lights; the spot's intensity × s².
-Scene transformedCornell(double s, glm::dvec3 t) {
-    const Scene unit = makeCornellBox();
-    WorldGeometry g = worldGeometryOf(unit);
-    for (glm::dvec3& p : g.positions) p = p * s + t;
-    Scene scene;
-    scene.name = unit.name;
-    scene.materials = unit.materials;
-    buildSceneGeometry(g, "scaled cornell", false, scene);
-    scene.cameras = unit.cameras;
-    for (Camera& c : scene.cameras) {
-        c.eye = c.eye * s + t;
-        c.target = c.target * s + t;
-    }
-    scene.lights = unit.lights;
-    for (Light& l : scene.lights) {
-        l.position = l.position * s + t;
-        l.intensity *= s * s;
-    }
-    scene.exposureEV = unit.exposureEV;
-    return scene;
-}
-
 const std::vector<Variant>& variants() {
     static const std::vector<Variant> v = {
         {"scale 1e-4", 1e-4, {}},          {"scale 1e5", 1e5, {}},

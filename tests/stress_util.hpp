@@ -14,6 +14,7 @@
 #include "gl/context.hpp"
 #include "pipeline/renderer.hpp"
 #include "scene/mesh_cleanup.hpp"
+#include "scene/scene_loader.hpp"
 #include "scene/scene.hpp"
 
 namespace vct::test {
@@ -109,6 +110,30 @@ inline WorldGeometry worldGeometryOf(const Scene& scene) {
     for (const DrawRange& r : scene.drawRanges)
         for (std::uint32_t t = r.firstIndex / 3; t < (r.firstIndex + r.indexCount) / 3; ++t) g.triangleMaterials[t] = r.material;
     return g;
+}
+
+// The Cornell box under p → p·s + t: geometry (world-space triangles rebuilt through the loaders'
+// clean-up), camera and lights; the spot's intensity × s² so that the image stays the same.
+inline Scene transformedCornell(double s, glm::dvec3 t) {
+    const Scene unit = makeCornellBox();
+    WorldGeometry g = worldGeometryOf(unit);
+    for (glm::dvec3& p : g.positions) p = p * s + t;
+    Scene scene;
+    scene.name = unit.name;
+    scene.materials = unit.materials;
+    buildSceneGeometry(g, "scaled cornell", false, scene);
+    scene.cameras = unit.cameras;
+    for (Camera& c : scene.cameras) {
+        c.eye = c.eye * s + t;
+        c.target = c.target * s + t;
+    }
+    scene.lights = unit.lights;
+    for (Light& l : scene.lights) {
+        l.position = l.position * s + t;
+        l.intensity *= s * s;
+    }
+    scene.exposureEV = unit.exposureEV;
+    return scene;
 }
 
 }  // namespace vct::test

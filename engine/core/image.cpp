@@ -10,17 +10,12 @@
 #include <tinyexr.h>
 
 #include "core/error.hpp"
+#include "core/file_extension.hpp"
 
 namespace vct {
 namespace fs = std::filesystem;
 
 namespace {
-std::string lowerExtension(const fs::path& path) {
-    std::string ext = path.extension().string();
-    for (char& c : ext) c = char(std::tolower(static_cast<unsigned char>(c)));
-    return ext;
-}
-
 void writePfm(const fs::path& path, const ImageF& image) {
     std::ofstream file(path, std::ios::binary);
     if (!file) fail("cannot write '", path.string(), "': check that the folder exists and is writable");

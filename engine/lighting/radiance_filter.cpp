@@ -1,20 +1,12 @@
 #include "lighting/radiance_filter.hpp"
 
+#include <array>
+
 #include "gl/shader.hpp"
 
 namespace vct {
 namespace {
 constexpr GLbitfield kBarrier = GL_SHADER_STORAGE_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT;
-
-// One filtered quantity: per-cell values (read by the leaf pass at binding 18), per-node raw
-// means, partial bricks per level and the pool of complete samples.
-struct Channel {
-    GLuint cells;
-    GLuint raw;
-    const std::vector<PartialBricks>& partial;
-    GLuint pool;
-    BrickCompletion& completion;
-};
 }  // namespace
 
 RadianceFilter::RadianceFilter()
@@ -25,11 +17,15 @@ RadianceFilter::RadianceFilter()
       completion_({"WORK_LIST_BORDER 1", "POOL_RGBA32F 1"}),
       directionCompletion_({"WORK_LIST_BORDER 1"}) {}
 
+std::array<RadianceFilter::Channel, 2> RadianceFilter::channelsOf(const RadianceVolume& volume) {
+    return {Channel{volume.cellRadiance.id(), volume.rawRadiance.id(), volume.partial, volume.brickRadiance.id(),
+                    completion_},
+            Channel{volume.cellDirection.id(), volume.rawDirection.id(), volume.partialDirection,
+                    volume.brickDirection.id(), directionCompletion_}};
+}
+
 void RadianceFilter::mip(const Octree& octree, RadianceVolume& volume) {
-    const Channel channels[] = {
-        {volume.cellRadiance.id(), volume.rawRadiance.id(), volume.partial, volume.brickRadiance.id(), completion_},
-        {volume.cellDirection.id(), volume.rawDirection.id(), volume.partialDirection, volume.brickDirection.id(),
-         directionCompletion_}};
+    const auto channels = channelsOf(volume);
     for (int level = octree.levels - 1; level >= 0; --level) {
         GLuint p = touchParents_.id();
         glUseProgram(p);
@@ -60,10 +56,7 @@ void RadianceFilter::mip(const Octree& octree, RadianceVolume& volume) {
 }
 
 void RadianceFilter::border(const Octree& octree, RadianceVolume& volume) {
-    const Channel channels[] = {
-        {volume.cellRadiance.id(), volume.rawRadiance.id(), volume.partial, volume.brickRadiance.id(), completion_},
-        {volume.cellDirection.id(), volume.rawDirection.id(), volume.partialDirection, volume.brickDirection.id(),
-         directionCompletion_}};
+    const auto channels = channelsOf(volume);
     for (int level = 0; level < octree.levels; ++level) {
         GLuint p = touchBorder_.id();
         glUseProgram(p);

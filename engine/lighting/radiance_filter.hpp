@@ -9,6 +9,9 @@
 // DESIGN lists border before mip because the classic scheme completes leaf borders first; here
 // parents filter the children's *partial* bricks (brick_layout.hpp), which needs no completed
 // borders, so all levels are completed last in one pass each.
+#include <array>
+#include <vector>
+
 #include "lighting/list_dispatch.hpp"
 #include "lighting/radiance_volume.hpp"
 
@@ -21,6 +24,17 @@ public:
     void border(const Octree& octree, RadianceVolume& volume);
 
 private:
+    // One filtered quantity: per-cell values (read by the leaf pass at binding 18), per-node raw
+    // means, partial bricks per level and the pool of complete samples.
+    struct Channel {
+        GLuint cells;
+        GLuint raw;
+        const std::vector<PartialBricks>& partial;
+        GLuint pool;
+        BrickCompletion& completion;
+    };
+    std::array<Channel, 2> channelsOf(const RadianceVolume& volume);
+
     gl::Program touchParents_, leaf_, parent_, touchBorder_;
     BrickCompletion completion_, directionCompletion_;
     ListDispatch listDispatch_;

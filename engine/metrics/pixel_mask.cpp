@@ -4,6 +4,8 @@
 #include <cctype>
 #include <string>
 
+#include "core/file_extension.hpp"
+
 namespace vct::metrics {
 
 PixelMask allPixels(int width, int height) {
@@ -28,8 +30,7 @@ PixelMask maskFromImage(const ImageF& mask) {
 }
 
 ImageF readMaskImage(const std::filesystem::path& path) {
-    std::string ext = path.extension().string();
-    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+    const std::string ext = lowerExtension(path);
     if (ext == ".pfm" || ext == ".exr") return readHdrImage(path);
     const Image8 image = readPng(path);
     ImageF out(image.width, image.height);

@@ -8,6 +8,7 @@
 #include <string>
 
 #include "core/error.hpp"
+#include "core/file_extension.hpp"
 
 namespace fs = std::filesystem;
 
@@ -86,17 +87,11 @@ void checkObjMaterialLibraries(const fs::path& obj) {
     }
 }
 
-bool hasExtension(const fs::path& path, const char* extension) {
-    std::string ext = path.extension().string();
-    for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-    return ext == extension;
-}
-
 }  // namespace
 
 void precheckModelFile(const fs::path& path) {
     checkGlbSizes(path);
-    if (hasExtension(path, ".obj")) checkObjMaterialLibraries(path);
+    if (lowerExtension(path) == ".obj") checkObjMaterialLibraries(path);
 }
 
 }  // namespace vct

@@ -21,6 +21,7 @@
 #include <assimp/version.h>
 
 #include "core/error.hpp"
+#include "core/file_extension.hpp"
 #include "core/log.hpp"
 #include "core/vector_text.hpp"
 #include "scene/file_precheck.hpp"
@@ -64,8 +65,7 @@ glm::dvec3 transformDirection(const glm::dmat4& m, const glm::dvec3& d) {
 }
 
 bool isGltf(const fs::path& path) {
-    std::string ext = path.extension().string();
-    for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    const std::string ext = lowerExtension(path);
     return ext == ".gltf" || ext == ".glb";
 }
 
