@@ -1,9 +1,14 @@
-// Stress 6, determinism (README "Robustness"): every voxel pool (octree, albedo and radiance, the
+// Stress 6, determinism (docs/robustness.md): every voxel pool (octree, albedo and radiance, the
 // 64-bit photon sums) and the HDR image are bit-identical over three independent renders, over
 // llvmpipe thread counts 1, 2 and 3 (different thread interleavings of every atomic), and between
 // the OSMesa and EGL backends. Extends Svo.ThreeBuildsAreBitIdentical (octree only, one context)
 // and Cli.CornellRendersThroughOSMesaAndEGLIdentically (≤ 1e-6, direct and GI).
+// The pools and every image are also compared with hashes recorded in tests/data/
+// determinism_hashes.txt: a change meant to leave the output alone (a refactor) must leave every
+// hash alone; a change meant to alter it re-records them (VCT_RECORD_HASHES=1) and says why.
 #include <cstdio>
+#include <cstdlib>
+#include <map>
 #include <fstream>
 #include <iterator>
 
@@ -66,6 +71,55 @@ std::vector<std::pair<std::string, std::vector<std::uint8_t>>> snapshot(const Sc
     return pools;
 }
 
+// 64-bit FNV-1a: enough to tell two byte strings apart, and the same on every platform.
+std::uint64_t fnv1a(const std::vector<std::uint8_t>& bytes) {
+    std::uint64_t hash = 14695981039346656037ull;
+    for (std::uint8_t b : bytes) hash = (hash ^ b) * 1099511628211ull;
+    return hash;
+}
+
+std::vector<std::uint8_t> bytesOf(const ImageF& image) {
+    const auto* bytes = reinterpret_cast<const std::uint8_t*>(image.rgba.data());
+    return std::vector<std::uint8_t>(bytes, bytes + image.rgba.size() * sizeof(float));
+}
+
+// Every image the suite's settings can produce of the Cornell box: each AOV, raw node values, the
+// voxel views and the 8-bit output.
+std::vector<std::pair<std::string, std::vector<std::uint8_t>>> imageSnapshot(const Scene& scene) {
+    auto context = gl::createContext(gl::Backend::OSMesa);
+    RenderSettings settings = smallSettings(64, 48, 6, 512);
+    Renderer renderer(scene, settings);
+    std::vector<std::pair<std::string, std::vector<std::uint8_t>>> images;
+    for (Aov aov : {Aov::Final, Aov::Direct, Aov::Indirect, Aov::Ao, Aov::Albedo, Aov::Normal, Aov::Depth}) {
+        settings.display.aov = aov;
+        renderer.setSettings(settings);
+        renderer.renderFrame(scene.cameras[0]);
+        images.emplace_back(std::string("aov ") + aovName(aov), bytesOf(renderer.readHdr()));
+    }
+    settings.display.aov = Aov::Final;
+    renderer.setSettings(settings);
+    renderer.renderFrame(scene.cameras[0]);
+    const Image8 ldr = renderer.readLdr();
+    images.emplace_back("aov final 8-bit", std::vector<std::uint8_t>(ldr.rgba.begin(), ldr.rgba.end()));
+    settings.bricks = false;
+    renderer.setSettings(settings);
+    renderer.renderFrame(scene.cameras[0]);
+    images.emplace_back("aov final, raw node values", bytesOf(renderer.readHdr()));
+    settings.bricks = true;
+    for (ViewMode view : {ViewMode::Voxels, ViewMode::Radiance}) {
+        settings.view = view;
+        for (int level : {0, 4}) {
+            settings.voxelViewLevel = level;
+            renderer.setSettings(settings);
+            renderer.renderFrame(scene.cameras[0]);
+            images.emplace_back(std::string("voxel view ") + (view == ViewMode::Voxels ? "albedo" : "radiance") +
+                                    " level " + std::to_string(level),
+                                bytesOf(renderer.readHdr()));
+        }
+    }
+    return images;
+}
+
 std::string readFile(const std::filesystem::path& path) {
     std::ifstream in(path, std::ios::binary);
     return {std::istreambuf_iterator<char>(in), {}};
@@ -118,4 +172,42 @@ TEST(StressDeterminism, ThreadCountsAndBackendsGiveBitIdenticalImages) {
     }
     std::printf("[ determinism] final and indirect HDR bit-identical over %zu runs (llvmpipe 1/2/3 threads, OSMesa and EGL)\n",
                 runs.size());
+}
+
+TEST(StressDeterminism, PoolsAndImagesMatchRecordedHashes) {
+    const Scene scene = makeCornellBox();
+    auto items = snapshot(scene);
+    for (auto& image : imageSnapshot(scene)) items.push_back(std::move(image));
+    const std::filesystem::path file = std::filesystem::path(VCT_TEST_DATA_DIR) / "determinism_hashes.txt";
+    if (const char* record = std::getenv("VCT_RECORD_HASHES"); record && std::string(record) == "1") {
+        std::ofstream out(file);
+        out << "# FNV-1a 64 of every voxel pool and image of StressDeterminism.PoolsAndImagesMatchRecordedHashes\n"
+               "# (Cornell box, 64x48, 6 voxel levels, llvmpipe). Re-record with VCT_RECORD_HASHES=1 only for a\n"
+               "# change meant to alter the output, and say so in its commit message.\n";
+        for (const auto& [name, data] : items) {
+            char hex[17];
+            std::snprintf(hex, sizeof hex, "%016llx", static_cast<unsigned long long>(fnv1a(data)));
+            out << hex << " " << name << "\n";
+        }
+        GTEST_SKIP() << "recorded " << items.size() << " hashes into " << file;
+    }
+    std::ifstream in(file);
+    ASSERT_TRUE(in) << "no recorded hashes at " << file << " (record them with VCT_RECORD_HASHES=1)";
+    std::map<std::string, std::string> recorded;
+    for (std::string line; std::getline(in, line);)
+        if (!line.empty() && line[0] != '#') recorded[line.substr(17)] = line.substr(0, 16);
+    std::size_t matched = 0;
+    for (const auto& [name, data] : items) {
+        char hex[17];
+        std::snprintf(hex, sizeof hex, "%016llx", static_cast<unsigned long long>(fnv1a(data)));
+        const auto it = recorded.find(name);
+        if (it == recorded.end()) {
+            ADD_FAILURE() << "'" << name << "' has no recorded hash";
+            continue;
+        }
+        EXPECT_EQ(it->second, hex) << name << " differs from its recorded hash";
+        matched += it->second == hex;
+    }
+    EXPECT_EQ(recorded.size(), items.size()) << "recorded hashes for items the test no longer produces";
+    std::printf("[ determinism] %zu of %zu pools and images match their recorded hashes\n", matched, items.size());
 }
