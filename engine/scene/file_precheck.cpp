@@ -16,7 +16,8 @@ namespace vct {
 namespace {
 
 // A GLB's header and chunk headers against the file's real size. Assimp allocates a chunk's
-// declared length before reading it, so an 84-byte file declaring a 4 GiB chunk asked for 4 GiB.
+// declared length before reading it, so an 84-byte file declaring a 4 GiB chunk would make it
+// ask for 4 GiB.
 void checkGlbSizes(const fs::path& path) {
     const std::string source = path.string();
     std::ifstream in(path, std::ios::binary);
@@ -48,7 +49,8 @@ std::string trimmed(const std::string& s) {
 
 // An MTL statement before the first `newmtl` has no material to belong to. Assimp 5.2 ignores
 // colours there but writes a texture statement (map_Kd, bump, disp, ...) through a null
-// material and crashes (found by tests/fuzz), so any statement there is refused.
+// material and crashes (tests/data/bad/obj_mtl_before_newmtl.obj), so any statement there is
+// refused.
 void checkMtlFile(const fs::path& mtl, const std::string& objSource) {
     std::ifstream in(mtl, std::ios::binary);
     std::string line;

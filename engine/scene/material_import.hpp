@@ -2,8 +2,9 @@
 // Assimp materials to vct materials: base colour (glTF base colour or diffuse), base alpha,
 // emissive radiance, alpha mode, and the base-colour texture decoded to RGBA8 (external files
 // relative to the model's folder, or embedded in the file). Every image is decoded once however
-// many materials use it. A texture that is missing or cannot be decoded is a warning (once per
-// file), is listed in LoadReport::missingTextures, and leaves the material untextured.
+// many materials use it (texture_library.hpp). A texture that is missing or cannot be decoded is
+// a warning (once per file), is listed in LoadReport::missingTextures, and leaves the material
+// untextured.
 #include <cstdint>
 #include <filesystem>
 #include <vector>

@@ -12,7 +12,37 @@
 namespace vct {
 namespace {
 
-bool isFinite(const glm::dvec2& v) { return std::isfinite(v.x) && std::isfinite(v.y); }
+// Named apart from vct::isFinite(dvec3): glm converts a dvec3 to a dvec2 implicitly, so an
+// overload of the same name would quietly check only x and y of a normal.
+bool isFiniteUv(const glm::dvec2& v) { return std::isfinite(v.x) && std::isfinite(v.y); }
+
+// ------------------------------------------------------------------------------------------------
+// Input checks
+
+// Callers build WorldGeometry in code, so a mismatch here is a bug in vct, not in the model.
+void checkConsistency(const WorldGeometry& g, std::size_t materialCount, const std::string& sourceName) {
+    const std::size_t vertexCount = g.positions.size();
+    const std::size_t triangleCount = g.triangleCount();
+    if (g.normals.size() != vertexCount || g.uvs.size() != vertexCount ||
+        g.triangleMaterials.size() != triangleCount || g.indices.size() != 3 * triangleCount)
+        fail(sourceName, ": internal error: inconsistent geometry arrays");
+    for (std::uint32_t index : g.indices)
+        if (index >= vertexCount) fail(sourceName, ": internal error: vertex index out of range");
+    for (std::uint32_t m : g.triangleMaterials)
+        if (m >= materialCount) fail(sourceName, ": internal error: material index out of range");
+}
+
+void resetGeometryCounters(LoadReport& report, std::size_t sourceTriangles) {
+    report.sourceTriangles = sourceTriangles;
+    report.degenerateTriangles = 0;
+    report.nonFinitePositions = 0;
+    report.droppedTriangles = 0;
+    report.repairedNormals = 0;
+    report.repairedUvs = 0;
+}
+
+// ------------------------------------------------------------------------------------------------
+// Non-finite positions
 
 // The part that owns vertex `v` (parts are sorted by firstVertex).
 const GeometryPart* partOf(const WorldGeometry& g, std::uint32_t v) {
@@ -24,40 +54,21 @@ const GeometryPart* partOf(const WorldGeometry& g, std::uint32_t v) {
     return &*std::prev(it);
 }
 
-}  // namespace
-
-void buildSceneGeometry(const WorldGeometry& g, const std::string& sourceName, bool sanitize,
-                        Scene& scene) {
-    const std::size_t vertexCount = g.positions.size();
-    const std::size_t triangleCount = g.triangleCount();
-    if (g.normals.size() != vertexCount || g.uvs.size() != vertexCount ||
-        g.triangleMaterials.size() != triangleCount || g.indices.size() != 3 * triangleCount)
-        fail(sourceName, ": internal error: inconsistent geometry arrays");
-    for (std::uint32_t index : g.indices)
-        if (index >= vertexCount) fail(sourceName, ": internal error: vertex index out of range");
-    for (std::uint32_t m : g.triangleMaterials)
-        if (m >= scene.materials.size())
-            fail(sourceName, ": internal error: material index out of range");
-
-    LoadReport& report = scene.report;
-    report.sourceTriangles = triangleCount;
-    report.degenerateTriangles = 0;
-    report.nonFinitePositions = 0;
-    report.droppedTriangles = 0;
-    report.repairedNormals = 0;
-    report.repairedUvs = 0;
-
-    // --- 1. Non-finite positions (counted once per source vertex, however often instanced) ----
-    std::vector<char> finite(vertexCount);
-    // Beyond ±kMaxWorldCoordinate counts as non-finite (core/vector_text.hpp).
-    for (std::size_t v = 0; v < vertexCount; ++v) finite[v] = isUsableCoordinate(g.positions[v]);
-    std::vector<char> referenced(vertexCount, 0);
+std::vector<char> referencedVertices(const WorldGeometry& g) {
+    std::vector<char> referenced(g.positions.size(), 0);
     for (std::uint32_t index : g.indices) referenced[index] = 1;
+    return referenced;
+}
 
+// Counts the referenced vertices without a usable position once per *source* vertex (mesh and
+// index within it), so a bad vertex of a mesh placed ten times counts once. `firstBad` names the
+// first one for the error message.
+std::size_t countBadSourceVertices(const WorldGeometry& g, const std::vector<char>& usable,
+                                   std::string& firstBad) {
+    const std::vector<char> referenced = referencedVertices(g);
     std::unordered_set<std::uint64_t> badSourceVertices;
-    std::string firstBad;
-    for (std::size_t v = 0; v < vertexCount; ++v) {
-        if (finite[v] || !referenced[v]) continue;
+    for (std::size_t v = 0; v < usable.size(); ++v) {
+        if (usable[v] || !referenced[v]) continue;
         const GeometryPart* part = partOf(g, static_cast<std::uint32_t>(v));
         const std::uint32_t local = part ? static_cast<std::uint32_t>(v) - part->firstVertex
                                          : static_cast<std::uint32_t>(v);
@@ -67,20 +78,41 @@ void buildSceneGeometry(const WorldGeometry& g, const std::string& sourceName, b
         if (firstBad.empty())
             firstBad = concat("mesh '", part ? part->name : std::string("?"), "' vertex ", local);
     }
-    report.nonFinitePositions = badSourceVertices.size();
-    if (report.nonFinitePositions > 0 && !sanitize)
-        fail(sourceName, ": ", report.nonFinitePositions,
-             " vertices have non-finite (NaN/Inf, or beyond ±", kMaxWorldCoordinate, ") positions (first: ", firstBad,
-             "); fix the model or pass --sanitize to drop the triangles that use them");
+    return badSourceVertices.size();
+}
 
-    // --- 2. Per-triangle checks: non-finite (sanitize), zero area -----------------------------
-    std::vector<std::uint32_t> kept;  // triangle ids
-    kept.reserve(triangleCount);
-    std::vector<glm::dvec3> faceCross(triangleCount);  // unnormalized, area-weighted normal
+// Per vertex: is its position usable? Beyond ±kMaxWorldCoordinate counts as non-finite
+// (core/vector_text.hpp). Sets report.nonFinitePositions; without `sanitize` any such vertex that
+// a triangle uses is an error.
+std::vector<char> usablePositions(const WorldGeometry& g, const std::string& sourceName,
+                                  bool sanitize, LoadReport& report) {
+    std::vector<char> usable(g.positions.size());
+    for (std::size_t v = 0; v < usable.size(); ++v) usable[v] = isUsableCoordinate(g.positions[v]);
+    std::string firstBad;
+    report.nonFinitePositions = countBadSourceVertices(g, usable, firstBad);
+    if (report.nonFinitePositions > 0 && !sanitize)
+        failNonFinitePositions(sourceName, report.nonFinitePositions, firstBad);
+    return usable;
+}
+
+// ------------------------------------------------------------------------------------------------
+// Per-triangle checks: non-finite (sanitize), zero area
+
+struct UsableTriangles {
+    std::vector<std::uint32_t> ids;     // the triangles kept, in input order
+    std::vector<glm::dvec3> faceCross;  // per input triangle: unnormalized, area-weighted normal
+};
+
+UsableTriangles keepUsableTriangles(const WorldGeometry& g, const std::vector<char>& usable,
+                                    LoadReport& report) {
+    const std::size_t triangleCount = g.triangleCount();
+    UsableTriangles kept;
+    kept.ids.reserve(triangleCount);
+    kept.faceCross.resize(triangleCount);
     for (std::size_t t = 0; t < triangleCount; ++t) {
         const std::uint32_t i0 = g.indices[3 * t], i1 = g.indices[3 * t + 1],
                             i2 = g.indices[3 * t + 2];
-        if (!finite[i0] || !finite[i1] || !finite[i2]) {
+        if (!usable[i0] || !usable[i1] || !usable[i2]) {
             ++report.droppedTriangles;
             continue;
         }
@@ -93,45 +125,61 @@ void buildSceneGeometry(const WorldGeometry& g, const std::string& sourceName, b
             ++report.degenerateTriangles;
             continue;
         }
-        faceCross[t] = c;
-        kept.push_back(static_cast<std::uint32_t>(t));
+        kept.faceCross[t] = c;
+        kept.ids.push_back(static_cast<std::uint32_t>(t));
     }
+    return kept;
+}
+
+// Warns about the triangles left out; none left at all is an error.
+void reportLeftOutTriangles(const std::string& sourceName, std::size_t triangleCount,
+                            bool noneKept, const LoadReport& report) {
     if (report.droppedTriangles > 0)
-        logWarn(concat(sourceName, ": dropped ", report.droppedTriangles,
-                       " triangles that use the ", report.nonFinitePositions,
-                       " vertices with non-finite positions (--sanitize)"));
+        warnDroppedNonFiniteTriangles(sourceName, report.droppedTriangles, report.nonFinitePositions);
     if (report.degenerateTriangles > 0)
         logWarn(concat(sourceName, ": left out ", report.degenerateTriangles,
                        " zero-area triangles (duplicate or collinear vertices)"));
-    if (kept.empty())
+    if (noneKept)
         fail(sourceName, ": the model has no triangles (", triangleCount,
              " in the file; ", report.degenerateTriangles, " have zero area, ",
              report.droppedTriangles, " were dropped for non-finite positions)");
+}
 
-    // --- 3. Sort by material (stable counting sort), one draw range per used material --------
-    const std::size_t materialCount = scene.materials.size();
+// ------------------------------------------------------------------------------------------------
+// Index buffer: sorted by material, vertices compacted
+
+// Stable counting sort of the kept triangles by material; one draw range per material used.
+std::vector<std::uint32_t> sortByMaterial(const WorldGeometry& g,
+                                          const std::vector<std::uint32_t>& kept,
+                                          std::size_t materialCount,
+                                          std::vector<DrawRange>& drawRanges) {
     std::vector<std::uint32_t> perMaterial(materialCount + 1, 0);
     for (std::uint32_t t : kept) ++perMaterial[g.triangleMaterials[t] + 1];
     for (std::size_t m = 0; m < materialCount; ++m) perMaterial[m + 1] += perMaterial[m];
     std::vector<std::uint32_t> sorted(kept.size());
-    {
-        std::vector<std::uint32_t> cursor(perMaterial.begin(), perMaterial.end() - 1);
-        for (std::uint32_t t : kept) sorted[cursor[g.triangleMaterials[t]]++] = t;
-    }
-    scene.drawRanges.clear();
+    std::vector<std::uint32_t> cursor(perMaterial.begin(), perMaterial.end() - 1);
+    for (std::uint32_t t : kept) sorted[cursor[g.triangleMaterials[t]]++] = t;
+
+    drawRanges.clear();
     for (std::size_t m = 0; m < materialCount; ++m) {
         const std::uint32_t count = perMaterial[m + 1] - perMaterial[m];
         if (count == 0) continue;
-        scene.drawRanges.push_back({3 * perMaterial[m], 3 * count, static_cast<std::uint32_t>(m)});
+        drawRanges.push_back({3 * perMaterial[m], 3 * count, static_cast<std::uint32_t>(m)});
     }
+    return sorted;
+}
 
-    // --- 4. Compact vertices in order of first use --------------------------------------------
+// Fills `indices` for the sorted triangles with the vertices renumbered in order of first use,
+// so vertices no kept triangle uses disappear. Returns new index -> old index.
+std::vector<std::uint32_t> compactVertices(const WorldGeometry& g,
+                                           const std::vector<std::uint32_t>& sorted,
+                                           std::vector<std::uint32_t>& indices) {
     constexpr std::uint32_t kUnused = std::numeric_limits<std::uint32_t>::max();
-    std::vector<std::uint32_t> remap(vertexCount, kUnused);
-    std::vector<std::uint32_t> order;  // new index -> old index
-    order.reserve(vertexCount);
-    scene.indices.clear();
-    scene.indices.reserve(3 * sorted.size());
+    std::vector<std::uint32_t> remap(g.positions.size(), kUnused);
+    std::vector<std::uint32_t> order;
+    order.reserve(g.positions.size());
+    indices.clear();
+    indices.reserve(3 * sorted.size());
     for (std::uint32_t t : sorted)
         for (int k = 0; k < 3; ++k) {
             const std::uint32_t old = g.indices[3 * t + k];
@@ -139,12 +187,20 @@ void buildSceneGeometry(const WorldGeometry& g, const std::string& sourceName, b
                 remap[old] = static_cast<std::uint32_t>(order.size());
                 order.push_back(old);
             }
-            scene.indices.push_back(remap[old]);
+            indices.push_back(remap[old]);
         }
+    return order;
+}
 
-    // --- 5. Normals: keep valid ones (normalized), rebuild the others from the faces ----------
+// ------------------------------------------------------------------------------------------------
+// Normals: keep valid ones (normalized), rebuild the others from the faces
+
+// The source normals of the compacted vertices, normalized; a missing, zero or non-finite one is
+// left at zero and flagged in `needsRepair`.
+std::vector<glm::dvec3> validNormals(const WorldGeometry& g, const std::vector<std::uint32_t>& order,
+                                     std::vector<char>& needsRepair) {
     std::vector<glm::dvec3> normals(order.size());
-    std::vector<char> needsRepair(order.size(), 0);
+    needsRepair.assign(order.size(), 0);
     for (std::size_t n = 0; n < order.size(); ++n) {
         const glm::dvec3 source = g.normals[order[n]];
         const double length = glm::length(source);
@@ -155,55 +211,118 @@ void buildSceneGeometry(const WorldGeometry& g, const std::string& sourceName, b
             normals[n] = glm::dvec3(0.0);
         }
     }
-    std::vector<glm::dvec3> firstFace(order.size(), glm::dvec3(0.0));
+    return normals;
+}
+
+// Each flagged normal becomes the area-weighted average of the faces that use the vertex, or the
+// first such face's normal where that sum cancels out (faces back to back) or overflows.
+void rebuildFromFaces(const std::vector<std::uint32_t>& sorted,
+                      const std::vector<glm::dvec3>& faceCross,
+                      const std::vector<std::uint32_t>& indices,
+                      const std::vector<char>& needsRepair, std::vector<glm::dvec3>& normals,
+                      std::size_t& repaired) {
+    std::vector<glm::dvec3> firstFace(normals.size(), glm::dvec3(0.0));
     for (std::size_t s = 0; s < sorted.size(); ++s) {
         const glm::dvec3 c = faceCross[sorted[s]];
         for (int k = 0; k < 3; ++k) {
-            const std::uint32_t n = scene.indices[3 * s + k];
+            const std::uint32_t n = indices[3 * s + k];
             if (!needsRepair[n]) continue;
             normals[n] += c;
             if (firstFace[n] == glm::dvec3(0.0)) firstFace[n] = c;
         }
     }
-    for (std::size_t n = 0; n < order.size(); ++n) {
+    for (std::size_t n = 0; n < normals.size(); ++n) {
         if (!needsRepair[n]) continue;
-        ++report.repairedNormals;
+        ++repaired;
         const double length = glm::length(normals[n]);
         normals[n] = (length > 0.0 && std::isfinite(length)) ? normals[n] / length
                                                              : glm::normalize(firstFace[n]);
     }
+}
 
-    // --- 6. Bounds in double, origin at the centre, float positions relative to it ------------
+// ------------------------------------------------------------------------------------------------
+// Bounds in double, origin at the centre, float positions relative to it
+
+Bounds boundsOf(const std::vector<glm::dvec3>& positions, const std::vector<std::uint32_t>& used) {
     Bounds bounds;
     bounds.min = glm::dvec3(std::numeric_limits<double>::infinity());
     bounds.max = glm::dvec3(-std::numeric_limits<double>::infinity());
-    for (std::uint32_t old : order) {
-        bounds.min = glm::min(bounds.min, g.positions[old]);
-        bounds.max = glm::max(bounds.max, g.positions[old]);
+    for (std::uint32_t old : used) {
+        bounds.min = glm::min(bounds.min, positions[old]);
+        bounds.max = glm::max(bounds.max, positions[old]);
     }
-    scene.worldBounds = bounds;
-    scene.origin = bounds.centre();
+    return bounds;
+}
 
-    scene.vertices.resize(order.size());
+// The Scene's vertices: positions as float(world − origin); non-finite UV components set to 0
+// and counted in `repairedUvs`.
+std::vector<Vertex> localVertices(const WorldGeometry& g, const std::vector<std::uint32_t>& order,
+                                  const std::vector<glm::dvec3>& normals, const glm::dvec3& origin,
+                                  std::size_t& repairedUvs) {
+    std::vector<Vertex> vertices(order.size());
     for (std::size_t n = 0; n < order.size(); ++n) {
         const std::uint32_t old = order[n];
-        Vertex& out = scene.vertices[n];
-        out.position = glm::vec3(g.positions[old] - scene.origin);
+        Vertex& out = vertices[n];
+        out.position = glm::vec3(g.positions[old] - origin);
         out.normal = glm::vec3(normals[n]);
         glm::dvec2 uv = g.uvs[old];
-        if (!isFinite(uv)) {
-            ++report.repairedUvs;
+        if (!isFiniteUv(uv)) {
+            ++repairedUvs;
             if (!std::isfinite(uv.x)) uv.x = 0.0;
             if (!std::isfinite(uv.y)) uv.y = 0.0;
         }
         out.uv = glm::vec2(uv);
     }
+    return vertices;
+}
+
+void reportRepairs(const std::string& sourceName, const LoadReport& report) {
     if (report.repairedUvs > 0)
         logWarn(concat(sourceName, ": set ", report.repairedUvs,
                        " non-finite texture coordinates to 0"));
     if (report.repairedNormals > 0)
         logInfo(concat(sourceName, ": rebuilt ", report.repairedNormals,
                        " missing, zero or non-finite normals from the faces"));
+}
+
+}  // namespace
+
+void failNonFinitePositions(const std::string& sourceName, std::size_t vertices,
+                            const std::string& first) {
+    fail(sourceName, ": ", vertices, " vertices have non-finite (NaN/Inf, or beyond ±",
+         kMaxWorldCoordinate, ") positions (first: ", first,
+         "); fix the model or pass --sanitize to drop the triangles that use them");
+}
+
+void warnDroppedNonFiniteTriangles(const std::string& sourceName, std::size_t triangles,
+                                   std::size_t vertices) {
+    logWarn(concat(sourceName, ": dropped ", triangles, " triangles that use the ", vertices,
+                   " vertices with non-finite positions (--sanitize)"));
+}
+
+void buildSceneGeometry(const WorldGeometry& g, const std::string& sourceName, bool sanitize,
+                        Scene& scene) {
+    checkConsistency(g, scene.materials.size(), sourceName);
+    LoadReport& report = scene.report;
+    resetGeometryCounters(report, g.triangleCount());
+
+    const std::vector<char> usable = usablePositions(g, sourceName, sanitize, report);
+    const UsableTriangles kept = keepUsableTriangles(g, usable, report);
+    reportLeftOutTriangles(sourceName, g.triangleCount(), kept.ids.empty(), report);
+
+    const std::vector<std::uint32_t> sorted =
+        sortByMaterial(g, kept.ids, scene.materials.size(), scene.drawRanges);
+    const std::vector<std::uint32_t> order = compactVertices(g, sorted, scene.indices);
+
+    std::vector<char> needsRepair;
+    std::vector<glm::dvec3> normals = validNormals(g, order, needsRepair);
+    rebuildFromFaces(sorted, kept.faceCross, scene.indices, needsRepair, normals,
+                     report.repairedNormals);
+
+    scene.worldBounds = boundsOf(g.positions, order);
+    scene.origin = scene.worldBounds.centre();
+    scene.vertices = localVertices(g, order, normals, scene.origin, report.repairedUvs);
+    reportRepairs(sourceName, report);
 }
 
 }  // namespace vct

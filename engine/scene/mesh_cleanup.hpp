@@ -15,6 +15,7 @@
 //     centre and positions stored as float(world − origin) (DESIGN 5.1).
 //
 // Files and built-in scenes both go through here, so their bounds and origin follow one rule.
+#include <cstddef>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -50,5 +51,12 @@ struct WorldGeometry {
 // described above.
 void buildSceneGeometry(const WorldGeometry& geometry, const std::string& sourceName,
                         bool sanitize, Scene& scene);
+
+// The messages about vertices with non-finite positions, also used by the model importer's own
+// check before Assimp merges vertices (scene_loader.cpp), so that both say the same.
+[[noreturn]] void failNonFinitePositions(const std::string& sourceName, std::size_t vertices,
+                                         const std::string& first);
+void warnDroppedNonFiniteTriangles(const std::string& sourceName, std::size_t triangles,
+                                   std::size_t vertices);
 
 }  // namespace vct

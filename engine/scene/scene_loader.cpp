@@ -145,6 +145,10 @@ private:
 // ------------------------------------------------------------------------------------------------
 // Geometry
 
+std::string meshNameOf(const aiMesh& mesh, unsigned meshIndex) {
+    return mesh.mName.length > 0 ? std::string(mesh.mName.C_Str()) : concat("mesh ", meshIndex);
+}
+
 // Non-finite vertex positions must be found before aiProcess_JoinIdenticalVertices: its
 // epsilon comparisons are false for NaN, so it silently merges a NaN vertex into a neighbour
 // and the model renders with a wrong triangle instead of failing. So the file is read without
@@ -154,160 +158,220 @@ struct NonFiniteScan {
     std::size_t droppedTriangles = 0;   // triangles removed (counted per instance), sanitize only
 };
 
-NonFiniteScan removeNonFinitePositions(aiScene& ai, const std::vector<FlatNode>& nodes,
-                                       const std::string& source, bool sanitize) {
+// How many nodes place each mesh.
+std::vector<std::size_t> instanceCounts(const aiScene& ai, const std::vector<FlatNode>& nodes) {
     std::vector<std::size_t> instances(ai.mNumMeshes, 0);
     for (const FlatNode& flat : nodes)
         for (unsigned k = 0; k < flat.node->mNumMeshes; ++k)
             if (flat.node->mMeshes[k] < ai.mNumMeshes) ++instances[flat.node->mMeshes[k]];
+    return instances;
+}
 
+// Flags the vertices of mesh `m` without a usable position; beyond ±kMaxWorldCoordinate counts
+// as non-finite too, as in buildSceneGeometry. `first` names the first one found in the file.
+std::vector<char> badVertices(const aiMesh& mesh, unsigned m, std::size_t& count, std::string& first) {
+    std::vector<char> bad(mesh.mNumVertices, 0);
+    for (unsigned v = 0; v < mesh.mNumVertices; ++v) {
+        if (isUsableCoordinate(toDouble(mesh.mVertices[v]))) continue;
+        bad[v] = 1;
+        ++count;
+        if (first.empty()) first = concat("mesh '", meshNameOf(mesh, m), "' vertex ", v);
+    }
+    return bad;
+}
+
+// Drops the faces that use a bad vertex and parks the bad positions, which no face uses any
+// more, at 0. Returns the triangles dropped, counted once per instance of the mesh.
+std::size_t dropFacesUsing(aiMesh& mesh, const std::vector<char>& bad, std::size_t instances) {
+    auto usesBad = [&](const aiFace& f) {
+        for (unsigned c = 0; c < f.mNumIndices; ++c)
+            if (f.mIndices[c] < mesh.mNumVertices && bad[f.mIndices[c]]) return true;
+        return false;
+    };
+    unsigned keep = 0;
+    for (unsigned f = 0; f < mesh.mNumFaces; ++f) keep += usesBad(mesh.mFaces[f]) ? 0 : 1;
+    aiFace* kept = new aiFace[std::max(keep, 1u)];
+    std::size_t dropped = 0;
+    unsigned k = 0;
+    for (unsigned f = 0; f < mesh.mNumFaces; ++f) {
+        aiFace& face = mesh.mFaces[f];
+        if (usesBad(face)) {
+            if (face.mNumIndices == 3) dropped += instances;
+            continue;
+        }
+        std::swap(kept[k].mNumIndices, face.mNumIndices);
+        std::swap(kept[k].mIndices, face.mIndices);
+        ++k;
+    }
+    delete[] mesh.mFaces;
+    mesh.mFaces = kept;
+    mesh.mNumFaces = keep;
+    for (unsigned v = 0; v < mesh.mNumVertices; ++v)
+        if (bad[v]) mesh.mVertices[v] = aiVector3D(0.0f, 0.0f, 0.0f);
+    return dropped;
+}
+
+NonFiniteScan removeNonFinitePositions(aiScene& ai, const std::vector<FlatNode>& nodes,
+                                       const std::string& source, bool sanitize) {
+    const std::vector<std::size_t> instances = instanceCounts(ai, nodes);
     NonFiniteScan scan;
     std::string first;
     for (unsigned m = 0; m < ai.mNumMeshes; ++m) {
         aiMesh* mesh = ai.mMeshes[m];
         if (!mesh || !mesh->mVertices || instances[m] == 0) continue;
-        std::vector<char> bad(mesh->mNumVertices, 0);
         std::size_t badHere = 0;
-        for (unsigned v = 0; v < mesh->mNumVertices; ++v) {
-            const aiVector3D& p = mesh->mVertices[v];
-            // Beyond ±kMaxWorldCoordinate counts as non-finite too (as in buildSceneGeometry).
-            if (isUsableCoordinate(toDouble(p))) continue;
-            bad[v] = 1;
-            ++badHere;
-            if (first.empty())
-                first = concat("mesh '",
-                               mesh->mName.length > 0 ? std::string(mesh->mName.C_Str())
-                                                      : concat("mesh ", m),
-                               "' vertex ", v);
-        }
-        if (badHere == 0) continue;
+        const std::vector<char> bad = badVertices(*mesh, m, badHere, first);
         scan.vertices += badHere;
-        if (!sanitize) continue;
-
-        // Drop the faces that use a bad vertex; park the bad positions at 0 (now unused).
-        auto usesBad = [&](const aiFace& f) {
-            for (unsigned c = 0; c < f.mNumIndices; ++c)
-                if (f.mIndices[c] < mesh->mNumVertices && bad[f.mIndices[c]]) return true;
-            return false;
-        };
-        unsigned keep = 0;
-        for (unsigned f = 0; f < mesh->mNumFaces; ++f) keep += usesBad(mesh->mFaces[f]) ? 0 : 1;
-        aiFace* kept = new aiFace[std::max(keep, 1u)];
-        unsigned k = 0;
-        for (unsigned f = 0; f < mesh->mNumFaces; ++f) {
-            aiFace& face = mesh->mFaces[f];
-            if (usesBad(face)) {
-                if (face.mNumIndices == 3) scan.droppedTriangles += instances[m];
-                continue;
-            }
-            std::swap(kept[k].mNumIndices, face.mNumIndices);
-            std::swap(kept[k].mIndices, face.mIndices);
-            ++k;
-        }
-        delete[] mesh->mFaces;
-        mesh->mFaces = kept;
-        mesh->mNumFaces = keep;
-        for (unsigned v = 0; v < mesh->mNumVertices; ++v)
-            if (bad[v]) mesh->mVertices[v] = aiVector3D(0.0f, 0.0f, 0.0f);
+        if (badHere > 0 && sanitize) scan.droppedTriangles += dropFacesUsing(*mesh, bad, instances[m]);
     }
-    if (scan.vertices > 0 && !sanitize)
-        fail(source, ": ", scan.vertices, " vertices have non-finite (NaN/Inf, or beyond ±", kMaxWorldCoordinate,
-             ") positions (first: ", first, "); fix the model or pass --sanitize to drop the triangles that use them");
+    if (scan.vertices > 0 && !sanitize) failNonFinitePositions(source, scan.vertices, first);
     if (scan.droppedTriangles > 0)
-        logWarn(concat(source, ": dropped ", scan.droppedTriangles, " triangles that use the ",
-                       scan.vertices, " vertices with non-finite positions (--sanitize)"));
+        warnDroppedNonFiniteTriangles(source, scan.droppedTriangles, scan.vertices);
     return scan;
 }
 
+// A node's world transform as applied to its meshes.
+struct InstanceTransform {
+    explicit InstanceTransform(const glm::dmat4& nodeWorld)
+        : world(nodeWorld),
+          normalMatrix(glm::transpose(glm::inverse(glm::dmat3(nodeWorld)))),
+          mirrored(glm::determinant(glm::dmat3(nodeWorld)) < 0.0) {}
+    glm::dmat4 world;
+    glm::dmat3 normalMatrix;
+    bool mirrored;  // swap two corners of each triangle to keep counter-clockwise = front
+};
+
+struct MeshRef {
+    const aiMesh& mesh;
+    unsigned index;    // in aiScene::mMeshes
+    std::string name;  // for messages
+};
+
+MeshRef meshOf(const aiScene& ai, const aiNode& node, unsigned k, const std::string& source) {
+    const unsigned meshIndex = node.mMeshes[k];
+    if (meshIndex >= ai.mNumMeshes || !ai.mMeshes[meshIndex])
+        fail(source, ": node '", node.mName.C_Str(), "' refers to mesh ", meshIndex,
+             ", but the file has only ", ai.mNumMeshes, " meshes; the file is corrupt");
+    const aiMesh& mesh = *ai.mMeshes[meshIndex];
+    return {mesh, meshIndex, meshNameOf(mesh, meshIndex)};
+}
+
+// Triangle faces of the mesh; its other faces (points and lines: polygons were triangulated)
+// are added to `ignoredPrimitives`.
+std::size_t countTriangles(const aiMesh& mesh, std::size_t& ignoredPrimitives) {
+    std::size_t triangles = 0;
+    for (unsigned f = 0; f < mesh.mNumFaces; ++f) {
+        if (mesh.mFaces[f].mNumIndices == 3)
+            ++triangles;
+        else
+            ++ignoredPrimitives;
+    }
+    return triangles;
+}
+
+// Index in WorldGeometry::positions at which the instance's vertices will start.
+std::uint32_t firstVertexFor(const WorldGeometry& g, const aiMesh& mesh, const std::string& source) {
+    const std::uint64_t first = g.positions.size();
+    if (first + mesh.mNumVertices >= std::numeric_limits<std::uint32_t>::max())
+        fail(source, ": the model has more than 4 billion vertices once instanced; vct "
+                     "cannot index that many");
+    return static_cast<std::uint32_t>(first);
+}
+
+// The mesh's Assimp material index; one beyond the file's materials (mNumMaterials) stands for a
+// default grey material, with a warning.
+std::uint32_t aiMaterialOf(const aiScene& ai, const MeshRef& ref, const std::string& source) {
+    const aiMesh& mesh = ref.mesh;
+    if (mesh.mMaterialIndex < ai.mNumMaterials) return mesh.mMaterialIndex;
+    logWarnOnce(concat("badmaterial:", source, ":", ref.index),
+                concat(source, ": mesh '", ref.name, "' refers to material ", mesh.mMaterialIndex,
+                       " (the file has ", ai.mNumMaterials, "); using a default grey material"));
+    return ai.mNumMaterials;
+}
+
+// Scene material indices in order of first use: `used[slot]` is the Assimp material index.
+class MaterialSlots {
+public:
+    explicit MaterialSlots(std::vector<std::uint32_t>& used) : used_(used) {}
+    std::uint32_t slotOf(std::uint32_t aiMaterial) {
+        auto [slot, inserted] = slots_.emplace(aiMaterial, static_cast<std::uint32_t>(used_.size()));
+        if (inserted) used_.push_back(aiMaterial);
+        return slot->second;
+    }
+
+private:
+    std::vector<std::uint32_t>& used_;
+    std::unordered_map<std::uint32_t, std::uint32_t> slots_;  // ai index -> scene index
+};
+
+void appendVertices(const aiMesh& mesh, const InstanceTransform& transform, WorldGeometry& g) {
+    const aiVector3D* uvs = mesh.mTextureCoords[0];
+    for (unsigned v = 0; v < mesh.mNumVertices; ++v) {
+        g.positions.push_back(transformPoint(transform.world, toDouble(mesh.mVertices[v])));
+        g.normals.push_back(mesh.mNormals ? transform.normalMatrix * toDouble(mesh.mNormals[v])
+                                          : glm::dvec3(0.0));
+        // Assimp's convention, kept as is (see Vertex::uv): v = 0 at the bottom of the image
+        // for every format (the glTF importer flips glTF's v).
+        g.uvs.push_back(uvs ? glm::dvec2(uvs[v].x, uvs[v].y) : glm::dvec2(0.0));
+    }
+}
+
+void appendTriangles(const MeshRef& ref, std::uint32_t base, bool mirrored, std::uint32_t material,
+                     const std::string& source, WorldGeometry& g) {
+    const aiMesh& mesh = ref.mesh;
+    for (unsigned f = 0; f < mesh.mNumFaces; ++f) {
+        const aiFace& face = mesh.mFaces[f];
+        if (face.mNumIndices != 3) continue;
+        for (int c = 0; c < 3; ++c)
+            if (face.mIndices[c] >= mesh.mNumVertices)
+                fail(source, ": mesh '", ref.name, "' face ", f, " uses vertex ", face.mIndices[c],
+                     ", but the mesh has only ", mesh.mNumVertices, " vertices; the file is corrupt");
+        const std::uint32_t a = face.mIndices[0], b = face.mIndices[1], c = face.mIndices[2];
+        g.indices.push_back(base + a);
+        g.indices.push_back(base + (mirrored ? c : b));
+        g.indices.push_back(base + (mirrored ? b : c));
+        g.triangleMaterials.push_back(material);
+    }
+}
+
+// Says why no triangle reached the scene, as precisely as the file allows.
+[[noreturn]] void failNoTriangles(const aiScene& ai, std::size_t droppedEarlier,
+                                  std::size_t ignoredPrimitives, const std::string& source) {
+    if (ai.mNumMeshes == 0)
+        fail(source, ": the model has no triangles (the file contains no meshes; is it a "
+                     "valid model file?)");
+    if (droppedEarlier > 0)
+        fail(source, ": the model has no triangles (all ", droppedEarlier,
+             " were dropped for non-finite positions)");
+    fail(source, ": the model has no triangles (", ai.mNumMeshes, " meshes, ", ignoredPrimitives,
+         " point/line primitives, no triangle faces in the scene graph)");
+}
+
+// Every mesh instance of the scene graph, in world space (double), into `g`; `usedMaterials`
+// gets the Assimp material index of each scene material that the triangles refer to.
 void gatherGeometry(const aiScene& ai, const std::vector<FlatNode>& nodes,
                     const std::string& source, std::size_t droppedEarlier, WorldGeometry& g,
                     std::vector<std::uint32_t>& usedMaterials) {
-    std::unordered_map<std::uint32_t, std::uint32_t> materialSlot;  // ai index -> scene index
+    MaterialSlots materials(usedMaterials);
     std::size_t ignoredPrimitives = 0;
-
     for (const FlatNode& flat : nodes) {
-        const aiNode& node = *flat.node;
-        const glm::dmat3 linear(flat.world);
-        const glm::dmat3 normalMatrix = glm::transpose(glm::inverse(linear));
-        const bool mirrored = glm::determinant(linear) < 0.0;  // keep counter-clockwise = front
-
-        for (unsigned k = 0; k < node.mNumMeshes; ++k) {
-            const unsigned meshIndex = node.mMeshes[k];
-            if (meshIndex >= ai.mNumMeshes || !ai.mMeshes[meshIndex])
-                fail(source, ": node '", node.mName.C_Str(), "' refers to mesh ", meshIndex,
-                     ", but the file has only ", ai.mNumMeshes, " meshes; the file is corrupt");
-            const aiMesh& mesh = *ai.mMeshes[meshIndex];
-            const std::string meshName =
-                mesh.mName.length > 0 ? std::string(mesh.mName.C_Str()) : concat("mesh ", meshIndex);
-
-            std::size_t triangles = 0;
-            for (unsigned f = 0; f < mesh.mNumFaces; ++f) {
-                if (mesh.mFaces[f].mNumIndices == 3)
-                    ++triangles;
-                else
-                    ++ignoredPrimitives;  // points and lines (polygons were triangulated)
-            }
-            if (triangles == 0) continue;
-            if (!mesh.mVertices)
-                fail(source, ": mesh '", meshName, "' has faces but no vertex positions");
-
-            const std::uint64_t first = g.positions.size();
-            if (first + mesh.mNumVertices >= std::numeric_limits<std::uint32_t>::max())
-                fail(source, ": the model has more than 4 billion vertices once instanced; vct "
-                             "cannot index that many");
-            const std::uint32_t aiMaterial = mesh.mMaterialIndex < ai.mNumMaterials
-                                                 ? mesh.mMaterialIndex
-                                                 : ai.mNumMaterials;  // → a default material
-            if (aiMaterial == ai.mNumMaterials)
-                logWarnOnce(concat("badmaterial:", source, ":", meshIndex),
-                            concat(source, ": mesh '", meshName, "' refers to material ",
-                                   mesh.mMaterialIndex, " (the file has ", ai.mNumMaterials,
-                                   "); using a default grey material"));
-            auto [slot, inserted] =
-                materialSlot.emplace(aiMaterial, static_cast<std::uint32_t>(usedMaterials.size()));
-            if (inserted) usedMaterials.push_back(aiMaterial);
-
-            g.parts.push_back({meshName, meshIndex, static_cast<std::uint32_t>(first)});
-            const aiVector3D* uvs = mesh.mTextureCoords[0];
-            for (unsigned v = 0; v < mesh.mNumVertices; ++v) {
-                g.positions.push_back(transformPoint(flat.world, toDouble(mesh.mVertices[v])));
-                g.normals.push_back(mesh.mNormals ? normalMatrix * toDouble(mesh.mNormals[v])
-                                                  : glm::dvec3(0.0));
-                // Assimp's convention, kept as is (see Vertex::uv): v = 0 at the bottom of the
-                // image for every format (the glTF importer flips glTF's v).
-                g.uvs.push_back(uvs ? glm::dvec2(uvs[v].x, uvs[v].y) : glm::dvec2(0.0));
-            }
-            for (unsigned f = 0; f < mesh.mNumFaces; ++f) {
-                const aiFace& face = mesh.mFaces[f];
-                if (face.mNumIndices != 3) continue;
-                for (int c = 0; c < 3; ++c)
-                    if (face.mIndices[c] >= mesh.mNumVertices)
-                        fail(source, ": mesh '", meshName, "' face ", f, " uses vertex ",
-                             face.mIndices[c], ", but the mesh has only ", mesh.mNumVertices,
-                             " vertices; the file is corrupt");
-                const std::uint32_t a = face.mIndices[0], b = face.mIndices[1],
-                                    c = face.mIndices[2];
-                const auto base = static_cast<std::uint32_t>(first);
-                g.indices.push_back(base + a);
-                g.indices.push_back(base + (mirrored ? c : b));
-                g.indices.push_back(base + (mirrored ? b : c));
-                g.triangleMaterials.push_back(slot->second);
-            }
+        const InstanceTransform transform(flat.world);
+        for (unsigned k = 0; k < flat.node->mNumMeshes; ++k) {
+            const MeshRef ref = meshOf(ai, *flat.node, k, source);
+            if (countTriangles(ref.mesh, ignoredPrimitives) == 0) continue;
+            if (!ref.mesh.mVertices)
+                fail(source, ": mesh '", ref.name, "' has faces but no vertex positions");
+            const std::uint32_t first = firstVertexFor(g, ref.mesh, source);
+            const std::uint32_t material = materials.slotOf(aiMaterialOf(ai, ref, source));
+            g.parts.push_back({ref.name, ref.index, first});
+            appendVertices(ref.mesh, transform, g);
+            appendTriangles(ref, first, transform.mirrored, material, source, g);
         }
     }
     if (ignoredPrimitives > 0)
         logWarn(concat(source, ": ignored ", ignoredPrimitives,
                        " point and line primitives (only triangles are rendered)"));
-    if (g.triangleCount() == 0) {
-        if (ai.mNumMeshes == 0)
-            fail(source, ": the model has no triangles (the file contains no meshes; is it a "
-                         "valid model file?)");
-        if (droppedEarlier > 0)
-            fail(source, ": the model has no triangles (all ", droppedEarlier,
-                 " were dropped for non-finite positions)");
-        fail(source, ": the model has no triangles (", ai.mNumMeshes, " meshes, ",
-             ignoredPrimitives, " point/line primitives, no triangle faces in the scene graph)");
-    }
+    if (g.triangleCount() == 0) failNoTriangles(ai, droppedEarlier, ignoredPrimitives, source);
 }
 
 // ------------------------------------------------------------------------------------------------
@@ -342,6 +406,22 @@ const glm::dmat4* findNode(const std::unordered_map<std::string, glm::dmat4>& by
     return it == byName.end() ? nullptr : &it->second;
 }
 
+// Vertical field of view in degrees. glTF stores yfov; assimp hands over a "horizontal" angle:
+// 5.2 computes yfov·aspect (wrong, but exactly invertible), ≥ 5.3 the true full horizontal angle
+// 2·atan(tan(yfov/2)·aspect). Other formats: the full horizontal angle.
+double verticalFovDeg(const aiCamera& c, bool gltf) {
+    const double hfov = c.mHorizontalFOV;
+    const double aspect = c.mAspect > 0.0f ? double(c.mAspect) : 0.0;
+    double fovY = hfov;
+    if (aspect > 0.0) {
+        if (gltf && !assimpAtLeast(5, 3))
+            fovY = hfov / aspect;
+        else
+            fovY = 2.0 * std::atan(std::tan(0.5 * hfov) / aspect);
+    }
+    return glm::degrees(fovY);
+}
+
 void importCameras(const aiScene& ai, const std::unordered_map<std::string, glm::dmat4>& byName,
                    bool gltf, const std::string& source, Scene& scene) {
     const double targetDistance = std::max(0.5 * glm::length(scene.worldBounds.size()), 1e-6);
@@ -372,20 +452,7 @@ void importCameras(const aiScene& ai, const std::unordered_map<std::string, glm:
         const glm::dvec3 forward = transformDirection(world, toDouble(c->mLookAt));
         camera.target = camera.eye + targetDistance * glm::normalize(forward);
         camera.up = glm::normalize(transformDirection(world, toDouble(c->mUp)));
-
-        // Vertical field of view. glTF stores yfov; assimp hands over a "horizontal" angle:
-        // 5.2 computes yfov·aspect (wrong, but exactly invertible), ≥ 5.3 the true full
-        // horizontal angle 2·atan(tan(yfov/2)·aspect). Other formats: the full horizontal angle.
-        const double hfov = c->mHorizontalFOV;
-        const double aspect = c->mAspect > 0.0f ? double(c->mAspect) : 0.0;
-        double fovY = hfov;
-        if (aspect > 0.0) {
-            if (gltf && !assimpAtLeast(5, 3))
-                fovY = hfov / aspect;
-            else
-                fovY = 2.0 * std::atan(std::tan(0.5 * hfov) / aspect);
-        }
-        camera.fovYDeg = glm::degrees(fovY);
+        camera.fovYDeg = verticalFovDeg(*c, gltf);
         try {
             validateCamera(camera);
         } catch (const Error& e) {
@@ -394,6 +461,28 @@ void importCameras(const aiScene& ai, const std::unordered_map<std::string, glm:
         }
         scene.cameras.push_back(camera);
     }
+}
+
+// A spot's intensity: the file's scalar divided by a pure quadratic attenuation factor; any
+// other attenuation is replaced by the inverse-square law, with a warning.
+double spotIntensity(const aiLight& l, double scalar, const std::string& what) {
+    const double a0 = l.mAttenuationConstant, a1 = l.mAttenuationLinear, a2 = l.mAttenuationQuadratic;
+    if (a0 == 0.0 && a1 == 0.0 && a2 > 0.0 && std::isfinite(a2)) return scalar / a2;
+    logWarnOnce(what + ":attenuation", concat(what, ": attenuation 1/(", a0, " + ", a1, "·d + ", a2,
+                                              "·d²) replaced by the inverse-square law 1/d²"));
+    return scalar;
+}
+
+// Cone half-angles in degrees, the outer one capped just below 90° and the inner one at most
+// the outer one.
+void setConeAngles(const aiLight& l, const std::string& what, Light& light) {
+    light.innerAngleDeg = glm::degrees(double(l.mAngleInnerCone));
+    light.outerAngleDeg = glm::degrees(double(l.mAngleOuterCone));
+    if (light.outerAngleDeg >= 90.0) {
+        logWarn(concat(what, ": outer cone angle ", light.outerAngleDeg, "° capped to 89.9°"));
+        light.outerAngleDeg = 89.9;
+    }
+    light.innerAngleDeg = std::min(light.innerAngleDeg, light.outerAngleDeg);
 }
 
 // Lights. vct has directional lights (irradiance, W/m²) and spot lights (intensity, W/sr, with
@@ -444,24 +533,8 @@ void importLights(const aiScene& ai, const std::unordered_map<std::string, glm::
         } else {
             light.type = LightType::Spot;
             light.position = transformPoint(world, gltf ? glm::dvec3(0.0) : toDouble(l->mPosition));
-            light.intensity = scalar;
-            const double a0 = l->mAttenuationConstant, a1 = l->mAttenuationLinear,
-                         a2 = l->mAttenuationQuadratic;
-            if (a0 == 0.0 && a1 == 0.0 && a2 > 0.0 && std::isfinite(a2)) {
-                light.intensity /= a2;
-            } else {
-                logWarnOnce(what + ":attenuation",
-                            concat(what, ": attenuation 1/(", a0, " + ", a1, "·d + ", a2,
-                                   "·d²) replaced by the inverse-square law 1/d²"));
-            }
-            light.innerAngleDeg = glm::degrees(double(l->mAngleInnerCone));
-            light.outerAngleDeg = glm::degrees(double(l->mAngleOuterCone));
-            if (light.outerAngleDeg >= 90.0) {
-                logWarn(concat(what, ": outer cone angle ", light.outerAngleDeg,
-                               "° capped to 89.9°"));
-                light.outerAngleDeg = 89.9;
-            }
-            light.innerAngleDeg = std::min(light.innerAngleDeg, light.outerAngleDeg);
+            light.intensity = spotIntensity(*l, scalar, what);
+            setConeAngles(*l, what, light);
         }
         try {
             validateLight(light, what);
@@ -491,11 +564,10 @@ double exposureFor(const std::vector<Light>& lights, const Bounds& bounds) {
     return std::round(2.0 * std::log2(0.8 / radiance)) / 2.0;  // nearest half stop
 }
 
-}  // namespace
-
 // ------------------------------------------------------------------------------------------------
+// The model file as a whole
 
-Scene loadModelFile(const fs::path& path, const LoadOptions& options) {
+void checkModelPath(const fs::path& path) {
     std::error_code ec;
     if (!fs::exists(path, ec))
         fail("model file '", path.string(),
@@ -503,17 +575,18 @@ Scene loadModelFile(const fs::path& path, const LoadOptions& options) {
     if (fs::is_directory(path, ec))
         fail("model path '", path.string(),
              "' is a folder, not a model file; give the .gltf/.glb/.obj file inside it");
-    const std::string source = path.string();
-    precheckModelFile(path);
+}
 
-    Assimp::Importer importer;
+// Reads the file with Assimp (which keeps the result): triangulated, meshes split by primitive
+// type (so that points and lines can be counted and skipped); then, once non-finite positions
+// are dealt with (see NonFiniteScan), identical vertices shared and normals generated where the
+// file has none. Node transforms are applied later, in double precision (not
+// aiProcess_PreTransformVertices). Assimp's own warnings are passed on once the read succeeded.
+const aiScene& readModel(Assimp::Importer& importer, const std::string& source, bool sanitize,
+                         NonFiniteScan& nonFinite) {
     // Generated normals are smoothed only across edges flatter than 80°: a box made of shared
     // vertices keeps flat faces instead of diagonal corner normals that light it from inside.
     importer.SetPropertyFloat(AI_CONFIG_PP_GSN_MAX_SMOOTHING_ANGLE, 80.0f);
-    // Triangulate polygons and split meshes by primitive type (so that points and lines can be
-    // counted and skipped); then, once non-finite positions are dealt with, share identical
-    // vertices and generate normals where the file has none. Node transforms are applied below,
-    // in double precision (not aiProcess_PreTransformVertices).
     const aiScene* ai = nullptr;
     const AssimpMessages assimpLog;
     try {
@@ -527,8 +600,8 @@ Scene loadModelFile(const fs::path& path, const LoadOptions& options) {
     if (!ai->mRootNode)
         fail("cannot read model '", source, "': the file has no scene graph");
 
-    const NonFiniteScan nonFinite = removeNonFinitePositions(
-        *const_cast<aiScene*>(ai), flattenNodes(*ai), source, options.sanitize);
+    nonFinite =
+        removeNonFinitePositions(*const_cast<aiScene*>(ai), flattenNodes(*ai), source, sanitize);
     try {
         ai = importer.ApplyPostProcessing(aiProcess_JoinIdenticalVertices |
                                           aiProcess_GenSmoothNormals);
@@ -538,36 +611,64 @@ Scene loadModelFile(const fs::path& path, const LoadOptions& options) {
     if (!ai || !ai->mRootNode)
         fail("cannot read model '", source, "': ", importer.GetErrorString());
     assimpLog.report(source);
+    return *ai;
+}
 
-    const bool gltf = isGltf(path);
-    const std::vector<FlatNode> nodes = flattenNodes(*ai);
-
-    Scene scene;
-    scene.name = path.filename().string();
-    scene.sourcePath = fs::absolute(path, ec).lexically_normal().string();
-    if (scene.sourcePath.empty()) scene.sourcePath = source;
-
+// Triangles and materials into the scene, with the triangles that the early non-finite check
+// dropped added to the counts.
+void importGeometry(const aiScene& ai, const std::vector<FlatNode>& nodes, const fs::path& path,
+                    const NonFiniteScan& nonFinite, bool sanitize, Scene& scene) {
+    const std::string source = path.string();
     WorldGeometry geometry;
     std::vector<std::uint32_t> usedMaterials;
-    gatherGeometry(*ai, nodes, source, nonFinite.droppedTriangles, geometry, usedMaterials);
-    importMaterials(*ai, usedMaterials, path, scene);
-    buildSceneGeometry(geometry, source, options.sanitize, scene);
+    gatherGeometry(ai, nodes, source, nonFinite.droppedTriangles, geometry, usedMaterials);
+    importMaterials(ai, usedMaterials, path, scene);
+    buildSceneGeometry(geometry, source, sanitize, scene);
     scene.report.sourceTriangles += nonFinite.droppedTriangles;
     scene.report.droppedTriangles += nonFinite.droppedTriangles;
     scene.report.nonFinitePositions += nonFinite.vertices;
+}
 
+// The file's cameras and lights, placed by the node of the same name; a default camera and sun
+// derived from the bounds when it has none.
+void importCamerasAndLights(const aiScene& ai, const std::vector<FlatNode>& nodes, bool gltf,
+                            const std::string& source, Scene& scene) {
     std::unordered_map<std::string, glm::dmat4> byName;  // first node of each name
     for (const FlatNode& n : nodes) byName.emplace(n.node->mName.C_Str(), n.world);
-    importCameras(*ai, byName, gltf, source, scene);
+    importCameras(ai, byName, gltf, source, scene);
     if (scene.cameras.empty()) scene.cameras.push_back(defaultCamera(scene.worldBounds));
 
-    importLights(*ai, byName, gltf, source, scene);
+    importLights(ai, byName, gltf, source, scene);
     if (scene.lights.empty()) {
         scene.lights.push_back(defaultSun());
         scene.exposureEV = 0.0;
     } else {
         scene.exposureEV = exposureFor(scene.lights, scene.worldBounds);
     }
+}
+
+}  // namespace
+
+// ------------------------------------------------------------------------------------------------
+
+Scene loadModelFile(const fs::path& path, const LoadOptions& options) {
+    checkModelPath(path);
+    const std::string source = path.string();
+    precheckModelFile(path);
+
+    Assimp::Importer importer;
+    NonFiniteScan nonFinite;
+    const aiScene& ai = readModel(importer, source, options.sanitize, nonFinite);
+    const std::vector<FlatNode> nodes = flattenNodes(ai);
+
+    Scene scene;
+    scene.name = path.filename().string();
+    std::error_code ec;
+    scene.sourcePath = fs::absolute(path, ec).lexically_normal().string();
+    if (scene.sourcePath.empty()) scene.sourcePath = source;
+
+    importGeometry(ai, nodes, path, nonFinite, options.sanitize, scene);
+    importCamerasAndLights(ai, nodes, isGltf(path), source, scene);
     return scene;
 }
 
@@ -635,7 +736,7 @@ Scene loadSponza(const LoadOptions& options) {
     scene.lights = {sun};
     // A lit floor of albedo ~0.5 reflects L = 0.5/π · 10 · cosθ ≈ 1.5 W/(m²·sr), which the ACES
     // curve keeps below white at EV 0, while the galleries lit only indirectly (≈ 1/50 of that)
-    // stay visible; at EV −1 they were lost in black.
+    // stay visible; one stop darker (EV −1) loses them in black.
     scene.exposureEV = 0.0;
     return scene;
 }
