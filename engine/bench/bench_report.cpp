@@ -72,6 +72,57 @@ double groupMs(const BenchRow& r, const PassGroup& g) {
     return ms;
 }
 
+// The default point's per-region indirect ratios, for the CSV: the extremes over the significant
+// cells and every cell's ratio, row-major from the top left, ';'-separated, empty where undefined.
+std::string regionCsvColumns(const BenchRow& r) {
+    if (!r.indirectRegions) return ",,";
+    const metrics::RegionRatios& regions = *r.indirectRegions;
+    auto optional = [](const std::optional<double>& v) { return v ? num(*v) : std::string(); };
+    std::string cells;
+    for (const auto& cell : regions.cells) {
+        if (&cell != &regions.cells.front()) cells += ';';
+        cells += optional(cell.ratio);
+    }
+    return optional(regions.minRatioSignificant) + "," + optional(regions.maxRatioSignificant) + "," + cells;
+}
+
+void writeRegionTable(std::ostringstream& md, const metrics::RegionRatios& regions) {
+    md << "## Indirect light per region (default point)\n\n";
+    md << "The image cut into " << regions.columns << "×" << regions.rows
+       << " cells (rows top to bottom as the image is seen); per cell the mean luminance of the engine's indirect "
+          "part over the reference's, and in parentheses the cell's share of the reference's indirect light. Cells "
+          "whose reference mean is at most "
+       << num(100.0 * metrics::kSignificantCellFraction, "%g")
+       << " % of the image's are in italics and left out of the extremes; - where undefined (no reference "
+          "indirect light). `vct compare --regions "
+       << regions.columns << "x" << regions.rows << "` prints the same table for any pair of images.\n\n|   |";
+    for (int column = 0; column < regions.columns; ++column) md << " column " << column << " |";
+    md << "\n|---|";
+    for (int column = 0; column < regions.columns; ++column) md << "---|";
+    md << "\n";
+    for (int row = 0; row < regions.rows; ++row) {
+        md << "| row " << row << " |";
+        for (int column = 0; column < regions.columns; ++column) {
+            const metrics::RegionCell& cell = regions.cell(column, row);
+            if (!cell.ratio) {
+                md << " - |";
+                continue;
+            }
+            const std::string ratio = num(*cell.ratio, "%.3f") + "×";
+            md << " " << (cell.significant ? ratio : "*" + ratio + "*") << " (" << num(100.0 * cell.share, "%.1f")
+               << " %) |";
+        }
+        md << "\n";
+    }
+    md << "\n";
+    if (regions.minRatioSignificant)
+        md << "Over the significant cells the ratio runs from " << num(*regions.minRatioSignificant, "%.3f") << " to "
+           << num(*regions.maxRatioSignificant, "%.3f") << " (whole image "
+           << num(regions.meanA / regions.meanB, "%.3f") << ").\n\n";
+    else
+        md << "No cell holds enough reference indirect light to count.\n\n";
+}
+
 std::string quoteShell(const std::string& s) {
     std::string q = "'";
     for (char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
@@ -222,7 +273,7 @@ void writeCsv(const std::filesystem::path& path, const std::vector<BenchRow>& ro
     for (const auto& p : parameterNames()) out << "," << p;
     out << ",frame_ms,frame_static_ms,frame_ms_all_repeats,update_ms,update_passes,setup_ms,memory_mib,cone_samples"
            ",rmse,relmse,psnr,ssim,direct_rmse,indirect_rmse,indirect_relmse,indirect_ratio,pareto,pareto_indirect"
-           ",incremental_identical";
+           ",incremental_identical,indirect_region_ratio_min,indirect_region_ratio_max,indirect_region_ratios";
     for (const auto& p : passNames) out << ",ms_" << p;
     out << "\n";
     for (std::size_t i = 0; i < rows.size(); ++i) {
@@ -244,7 +295,8 @@ void writeCsv(const std::filesystem::path& path, const std::vector<BenchRow>& ro
         out << "," << num(r.error.rmse) << "," << num(r.error.relMse) << "," << num(r.error.psnr) << ","
             << num(r.error.ssim) << "," << num(r.error.directRmse) << "," << num(r.error.indirectRmse) << ","
             << num(r.error.indirectRelMse) << "," << num(r.error.indirectRatio) << "," << (r.pareto ? 1 : 0) << ","
-            << (frontIndirect[i] ? 1 : 0) << "," << (engine ? (r.incrementalIdentical ? "1" : "0") : "");
+            << (frontIndirect[i] ? 1 : 0) << "," << (engine ? (r.incrementalIdentical ? "1" : "0") : "") << ","
+            << regionCsvColumns(r);
         for (const auto& name : passNames) {
             out << ",";
             for (const auto& p : r.passes)
@@ -329,6 +381,8 @@ void writeMarkdown(const std::filesystem::path& path, const std::vector<BenchRow
         if (r.kind == "engine") allIdentical = allIdentical && r.incrementalIdentical;
     md << "- Incrementally updated images identical to full frames at every point: " << (allIdentical ? "yes" : "**no**")
        << ".\n\n";
+
+    if (def && def->indirectRegions) writeRegionTable(md, *def->indirectRegions);
 
     md << "## Engine points\n\n";
     md << "| point | frame ms | static ms | update ms | memory MiB | RMSE | relMSE | PSNR dB | SSIM | direct RMSE | "

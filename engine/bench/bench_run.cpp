@@ -200,7 +200,11 @@ std::vector<BenchRow> runEnginePoints(const Scene& scene, const Camera& camera, 
         for (float v : final.rgba) nonFinite += !std::isfinite(v);
         for (float v : direct.rgba) nonFinite += !std::isfinite(v);
         if (nonFinite) fail("point ", point.label, ": the engine image has ", nonFinite, " non-finite values (engine bug)");
-        row.error = measureErrors(final, direct, subtractImages(final, direct), reference, display);
+        const ImageF indirect = subtractImages(final, direct);
+        row.error = measureErrors(final, direct, indirect, reference, display);
+        if (point.isDefault)
+            row.indirectRegions =
+                metrics::regionRatios(indirect, reference.indirect, kIndirectRegionGrid, kIndirectRegionGrid);
         rows.push_back(row);
         if (progress) progress(rows.back(), i, points.size());
     }

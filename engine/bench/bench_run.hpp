@@ -19,12 +19,14 @@
 // these may sum to slightly more than the frame.
 #include <cstdint>
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "bench/reference_cache.hpp"
 #include "bench/sweep.hpp"
 #include "metrics/image_metrics.hpp"
+#include "metrics/region_ratio.hpp"
 #include "pipeline/renderer.hpp"
 
 namespace vct::bench {
@@ -35,6 +37,10 @@ struct ErrorMetrics {
     double indirectRmse = 0.0, indirectRelMse = 0.0;          // indirect part alone
     double indirectRatio = 0.0;  // mean luminance of the indirect part / the reference's
 };
+
+// The default point's indirect part is also compared per region, on a grid of this many cells per
+// side (metrics/region_ratio.hpp): where the engine's indirect light is too dark or too bright.
+inline constexpr int kIndirectRegionGrid = 3;
 
 struct PassCost {
     std::string name;
@@ -58,6 +64,8 @@ struct BenchRow {
     std::size_t memoryBytes = 0;   // engine: GPU pools the point uses
     std::uint64_t coneSamples = 0;
     ErrorMetrics error;
+    // Engine default point only: mean luminance of the indirect part per region / the reference's.
+    std::optional<metrics::RegionRatios> indirectRegions;
     bool pareto = false;
     bool incrementalIdentical = true;  // engine: step 1's image equals the full frame's
 };

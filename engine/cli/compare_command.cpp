@@ -1,11 +1,16 @@
 // `vct compare A B`: error metrics of image A against the reference B (both linear radiance,
 // .pfm or .exr, same size): RMSE and relative MSE in linear radiance, PSNR and SSIM on the
-// displayed luma, per-pixel relative error statistics; optionally a mask, a JSON report and a
-// false-colour error image. Definitions: engine/metrics/image_metrics.hpp and ssim.hpp.
+// displayed luma, per-pixel relative error statistics; optionally a mask, a JSON report, a
+// false-colour error image, a grid of per-region brightness ratios (--regions) and a picture of
+// the per-pixel ratio (--ratio-image). Definitions: engine/metrics/image_metrics.hpp, ssim.hpp,
+// region_ratio.hpp and error_image.hpp.
+#include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
+#include <functional>
 #include <optional>
+#include <string_view>
 
 #include <nlohmann/json.hpp>
 
@@ -16,16 +21,130 @@
 #include "core/tonemap.hpp"
 #include "metrics/error_image.hpp"
 #include "metrics/image_metrics.hpp"
+#include "metrics/region_ratio.hpp"
 
 namespace vct::cli {
 namespace {
 
 struct CompareOptions {
-    std::string a, b, mask, json, errorImage;
+    std::string a, b, mask, json, errorImage, ratioImage, regions;
     double exposureEV = 0.0;
     std::string toneCurve = "aces";
     double errorScale = metrics::kDefaultErrorScale;
+    double ratioStops = metrics::kDefaultRatioStops;
+    bool regionsGiven = false;  // an empty --regions value is refused, not ignored
 };
+
+struct RegionGrid {
+    int columns = 0, rows = 0;
+};
+
+// "CxR" (e.g. "3x3"), each a whole number in 1..kMaxRegionCells.
+RegionGrid parseRegionGrid(const std::string& text) {
+    const auto refuse = [&] {
+        fail("--regions must be COLUMNSxROWS, each a whole number from 1 to ", metrics::kMaxRegionCells,
+             " (e.g. 3x3), got '", text, "'");
+    };
+    const auto wholeNumber = [&](std::string_view digits) {
+        int value = 0;
+        const bool onlyDigits = !digits.empty() && digits.size() <= 3 &&
+                                digits.find_first_not_of("0123456789") == std::string_view::npos;
+        if (!onlyDigits) refuse();
+        std::from_chars(digits.data(), digits.data() + digits.size(), value);
+        if (value < 1 || value > metrics::kMaxRegionCells) refuse();
+        return value;
+    };
+    const std::size_t x = text.find_first_of("xX");
+    if (x == std::string::npos) refuse();
+    const std::string_view whole(text);
+    return {wholeNumber(whole.substr(0, x)), wholeNumber(whole.substr(x + 1))};
+}
+
+std::string formatRatio(const metrics::RegionCell& cell) {
+    if (!cell.ratio) return "-";
+    char text[32];
+    std::snprintf(text, sizeof text, cell.significant ? "%.3f" : "(%.3f)", *cell.ratio);
+    return text;
+}
+
+// One value per cell, rows top to bottom as the image is seen.
+void printGrid(const metrics::RegionRatios& r, const char* title,
+               const std::function<std::string(const metrics::RegionCell&)>& value) {
+    std::printf("    %s\n      %-8s", title, "");
+    for (int column = 0; column < r.columns; ++column) std::printf(" %10s", concat("column ", column).c_str());
+    std::printf("\n");
+    for (int row = 0; row < r.rows; ++row) {
+        std::printf("      %-8s", concat("row ", row).c_str());
+        for (int column = 0; column < r.columns; ++column) std::printf(" %10s", value(r.cell(column, row)).c_str());
+        std::printf("\n");
+    }
+}
+
+std::string describeExtreme(const metrics::RegionRatios& r, const std::optional<double>& ratio) {
+    for (const auto& cell : r.cells)
+        if (cell.significant && cell.ratio == ratio)
+            return concat(formatRatio(cell), " (column ", cell.column, ", row ", cell.row, ")");
+    return "-";
+}
+
+void printRegions(const metrics::RegionRatios& r) {
+    std::printf("  regions %dx%d: mean luminance per cell, column 0 at the left, row 0 at the top\n", r.columns,
+                r.rows);
+    printGrid(r, "A/B", formatRatio);
+    printGrid(r, "B mean", [](const metrics::RegionCell& cell) {
+        char text[32];
+        std::snprintf(text, sizeof text, "%.4g", cell.meanB);
+        return cell.pixels ? std::string(text) : std::string("-");
+    });
+    printGrid(r, "share of B's light", [](const metrics::RegionCell& cell) {
+        char text[32];
+        std::snprintf(text, sizeof text, "%.1f %%", 100.0 * cell.share);
+        return cell.pixels ? std::string(text) : std::string("-");
+    });
+    const double threshold = metrics::kSignificantCellFraction * r.meanB;
+    std::printf("    (…) = B mean ≤ %g %% of the image's %.4g, left out of min/max; "
+                "- = no counted pixel or B mean ≤ 0\n",
+                100.0 * metrics::kSignificantCellFraction, r.meanB);
+    if (r.minRatioSignificant)
+        std::printf("  regions A/B over cells with B mean > %.4g: min %s, max %s\n", threshold,
+                    describeExtreme(r, r.minRatioSignificant).c_str(),
+                    describeExtreme(r, r.maxRatioSignificant).c_str());
+    else
+        std::printf("  regions A/B: no cell has a B mean above %.4g, so no min/max\n", threshold);
+}
+
+nlohmann::ordered_json optionalNumber(const std::optional<double>& value) {
+    return value ? nlohmann::ordered_json(*value) : nlohmann::ordered_json(nullptr);
+}
+
+nlohmann::ordered_json regionsJson(const metrics::RegionRatios& r) {
+    nlohmann::ordered_json j;
+    j["columns"] = r.columns;
+    j["rows"] = r.rows;
+    j["mean_a"] = r.meanA;
+    j["mean_b"] = r.meanB;
+    j["significant_fraction"] = metrics::kSignificantCellFraction;
+    j["min_ratio_significant"] = optionalNumber(r.minRatioSignificant);
+    j["max_ratio_significant"] = optionalNumber(r.maxRatioSignificant);
+    j["cells"] = nlohmann::ordered_json::array();
+    for (const auto& cell : r.cells) {
+        nlohmann::ordered_json c;
+        c["column"] = cell.column;
+        c["row"] = cell.row;
+        c["ratio"] = optionalNumber(cell.ratio);
+        c["mean_a"] = cell.meanA;
+        c["mean_b"] = cell.meanB;
+        c["pixels"] = cell.pixels;
+        c["share"] = cell.share;
+        c["significant"] = cell.significant;
+        c["x0"] = cell.x0;
+        c["x1"] = cell.x1;
+        c["y0"] = cell.y0;
+        c["y1"] = cell.y1;
+        j["cells"].push_back(c);
+    }
+    return j;
+}
 
 std::string formatPsnr(double psnr) {
     if (std::isinf(psnr)) return "inf";
@@ -35,6 +154,11 @@ std::string formatPsnr(double psnr) {
 void run(const CompareOptions& o) {
     if (!o.json.empty()) ensureWritable(o.json);
     if (!o.errorImage.empty()) ensureWritable(o.errorImage);
+    if (!o.ratioImage.empty()) ensureWritable(o.ratioImage);
+    std::optional<RegionGrid> grid;
+    if (o.regionsGiven) grid = parseRegionGrid(o.regions);
+    if (!(o.ratioStops > 0.0) || !std::isfinite(o.ratioStops))
+        fail("--ratio-stops must be a positive number of stops (e.g. 2: full colour at 4x)");
     if (!std::isfinite(o.exposureEV)) fail("--exposure must be a finite number of stops");
     if (!(o.errorScale > 0.0) || !std::isfinite(o.errorScale))
         fail("--error-scale must be a positive number (e.g. 0.2 for ±20 %)");
@@ -64,10 +188,19 @@ void run(const CompareOptions& o) {
                 100.0 * m.relErrorMedian, 100.0 * m.relErrorP95, 100.0 * m.fractionWithin1Percent,
                 100.0 * m.fractionWithin5Percent);
     std::printf("  mean luminance  A %.6g  B %.6g\n", m.meanLuminanceA, m.meanLuminanceB);
+    std::optional<metrics::RegionRatios> regions;
+    if (grid) {
+        regions = metrics::regionRatios(a, b, grid->columns, grid->rows, &mask);
+        printRegions(*regions);
+    }
 
     if (!o.errorImage.empty()) {
         writePng(o.errorImage, metrics::relativeErrorImage(a, b, mask, o.errorScale));
         std::printf("  error image %s: %s\n", o.errorImage.c_str(), metrics::errorImageLegend(o.errorScale).c_str());
+    }
+    if (!o.ratioImage.empty()) {
+        writePng(o.ratioImage, metrics::ratioImage(a, b, mask, o.ratioStops));
+        std::printf("  ratio image %s: %s\n", o.ratioImage.c_str(), metrics::ratioImageLegend(o.ratioStops).c_str());
     }
     if (!o.json.empty()) {
         nlohmann::ordered_json j;
@@ -90,6 +223,7 @@ void run(const CompareOptions& o) {
         j["within_5_percent"] = m.fractionWithin5Percent;
         j["mean_luminance_a"] = m.meanLuminanceA;
         j["mean_luminance_b"] = m.meanLuminanceB;
+        if (regions) j["regions"] = regionsJson(*regions);
         std::ofstream file(o.json);
         file << j.dump(2) << "\n";
         if (!file) fail("cannot write '", o.json, "' (disk full?)");
@@ -111,11 +245,20 @@ Run addCompareCommand(CLI::App& app) {
     command->add_option("--error-image", o.errorImage, "false-colour PNG of the signed relative error per pixel");
     command->add_option("--error-scale", o.errorScale, "relative error shown in full colour by --error-image")
         ->capture_default_str();
+    CLI::Option* regions = command->add_option(
+        "--regions", o.regions, "per-cell A/B of mean luminance on a COLUMNSxROWS grid (e.g. 3x3, 1..64 per side)");
+    command->add_option("--ratio-image", o.ratioImage,
+                        "false-colour PNG of log2(A/B) of luminance per pixel: blue darker, red brighter");
+    command->add_option("--ratio-stops", o.ratioStops, "stops of A/B shown in full colour by --ratio-image")
+        ->capture_default_str();
     command->add_option("--exposure", o.exposureEV, "exposure (EV) of the display transform for PSNR/SSIM")
         ->capture_default_str();
     command->add_option("--tonemap", o.toneCurve, "tone curve for PSNR/SSIM: aces, reinhard, clamp")
         ->capture_default_str();
-    return [options] { run(*options); };
+    return [options, regions] {
+        options->regionsGiven = regions->count() > 0;
+        run(*options);
+    };
 }
 
 }  // namespace vct::cli

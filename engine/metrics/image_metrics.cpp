@@ -9,14 +9,6 @@
 namespace vct::metrics {
 namespace {
 
-void checkFinite(const ImageF& image, const char* name) {
-    std::size_t bad = 0;
-    for (int y = 0; y < image.height; ++y)
-        for (int x = 0; x < image.width; ++x)
-            for (int c = 0; c < 3; ++c) bad += !std::isfinite(image.at(x, y)[c]);
-    if (bad) fail(name, " holds ", bad, " non-finite (NaN or Inf) values; metrics need finite radiance");
-}
-
 void checkMask(const PixelMask& mask, const ImageF& image) {
     if (mask.width != image.width || mask.height != image.height)
         fail("the mask is ", mask.width, "x", mask.height, " but the images are ", image.width, "x", image.height,
@@ -24,15 +16,24 @@ void checkMask(const PixelMask& mask, const ImageF& image) {
     if (mask.countedPixels == 0) fail("the mask selects no pixel (pixels count where the mask luminance is > 0.5)");
 }
 
-double meanReferenceLuminance(const ImageF& b, const PixelMask& mask) {
+}  // namespace
+
+double meanLuminance(const ImageF& image, const PixelMask& mask) {
+    if (mask.countedPixels == 0) return 0.0;
     double sum = 0.0;
-    for (int y = 0; y < b.height; ++y)
-        for (int x = 0; x < b.width; ++x)
-            if (mask(x, y)) sum += luminance(b.at(x, y));
+    for (int y = 0; y < image.height; ++y)
+        for (int x = 0; x < image.width; ++x)
+            if (mask(x, y)) sum += luminance(image.at(x, y));
     return sum / double(mask.countedPixels);
 }
 
-}  // namespace
+void checkFinite(const ImageF& image, const char* name) {
+    std::size_t bad = 0;
+    for (int y = 0; y < image.height; ++y)
+        for (int x = 0; x < image.width; ++x)
+            for (int c = 0; c < 3; ++c) bad += !std::isfinite(image.at(x, y)[c]);
+    if (bad) fail(name, " holds ", bad, " non-finite (NaN or Inf) values; metrics need finite radiance");
+}
 
 void checkSameSize(const ImageF& a, const ImageF& b, const char* nameA, const char* nameB) {
     if (a.width != b.width || a.height != b.height)
@@ -67,7 +68,7 @@ double relativeMse(const ImageF& a, const ImageF& b, const PixelMask& mask) {
 }
 
 std::vector<double> signedRelativeErrors(const ImageF& a, const ImageF& b, const PixelMask& mask) {
-    const double floor = std::max(kRelativeErrorFloor * meanReferenceLuminance(b, mask), 1e-30);
+    const double floor = std::max(kRelativeErrorFloor * meanLuminance(b, mask), 1e-30);
     std::vector<double> errors(std::size_t(a.width) * a.height, 0.0);
     for (int y = 0; y < a.height; ++y)
         for (int x = 0; x < a.width; ++x) {

@@ -53,6 +53,11 @@ double relativeMse(const ImageF& a, const ImageF& b, const PixelMask& mask);
 // 0 outside the mask.
 std::vector<double> signedRelativeErrors(const ImageF& a, const ImageF& b, const PixelMask& mask);
 
+// Mean Rec. 709 luminance over the counted pixels (0 when none counts).
+double meanLuminance(const ImageF& image, const PixelMask& mask);
+
 void checkSameSize(const ImageF& a, const ImageF& b, const char* nameA, const char* nameB);
+// Throws naming `name` and the count when an RGB value is NaN or Inf.
+void checkFinite(const ImageF& image, const char* name);
 
 }  // namespace vct::metrics
