@@ -14,13 +14,13 @@ layout(local_size_x = 64) in;
 #endif
 #include "work_list.glsl"
 
-layout(rgba32f, binding = 0) uniform readonly imageBuffer uPartial;
+layout(rgba32f, binding = IMAGE_PARTIAL_BRICKS) uniform readonly imageBuffer uPartial;
 // The albedo pool is RGBA16F (ρ·τ ≤ 6.9); the radiance pool RGBA32F (variant POOL_RGBA32F), since
 // radiance spans the whole range of light intensities (half floats: 6e-8 .. 65504).
 #ifdef POOL_RGBA32F
-layout(rgba32f, binding = 1) uniform writeonly image3D uBrickPool;
+layout(rgba32f, binding = IMAGE_BRICK_POOL) uniform writeonly image3D uBrickPool;
 #else
-layout(rgba16f, binding = 1) uniform writeonly image3D uBrickPool;
+layout(rgba16f, binding = IMAGE_BRICK_POOL) uniform writeonly image3D uBrickPool;
 #endif
 
 

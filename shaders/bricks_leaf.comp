@@ -14,9 +14,9 @@ layout(local_size_x = 64) in;
 #endif
 #include "work_list.glsl"
 
-layout(std430, binding = 7) buffer CellAlbedo { uint cellAlbedo[]; };
-layout(rgba32f, binding = 0) uniform writeonly imageBuffer uPartial;  // 27 per node of this level
-layout(std430, binding = 12) buffer RawValue { vec4 rawValue[]; };
+layout(std430, binding = SSBO_CELL_VALUES) buffer CellAlbedo { uint cellAlbedo[]; };
+layout(rgba32f, binding = IMAGE_PARTIAL_BRICKS) uniform writeonly imageBuffer uPartial;  // 27 per node of this level
+layout(std430, binding = SSBO_RAW_VALUE) buffer RawValue { vec4 rawValue[]; };
 
 
 void main() {

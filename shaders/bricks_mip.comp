@@ -13,9 +13,9 @@ layout(local_size_x = 64) in;
 #endif
 #include "work_list.glsl"
 
-layout(rgba32f, binding = 0) uniform writeonly imageBuffer uPartial;        // this level
-layout(rgba32f, binding = 1) uniform readonly imageBuffer uChildPartial;    // level + 1
-layout(std430, binding = 12) buffer RawValue { vec4 rawValue[]; };
+layout(rgba32f, binding = IMAGE_PARTIAL_BRICKS) uniform writeonly imageBuffer uPartial;        // this level
+layout(rgba32f, binding = IMAGE_CHILD_PARTIAL_BRICKS) uniform readonly imageBuffer uChildPartial;    // level + 1
+layout(std430, binding = SSBO_RAW_VALUE) buffer RawValue { vec4 rawValue[]; };
 
 
 void main() {

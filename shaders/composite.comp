@@ -2,19 +2,20 @@
 // Final image: direct (shadowed) + emissive (+ indirect, with the GI pipeline), written as linear
 // HDR and as a tone-mapped 8-bit sRGB image. With an AOV selected, that buffer is written instead
 // (raw values in HDR, a visualisation in 8 bits).
+#include "math.glsl"
 #include "tonemap.glsl"
 
 layout(local_size_x = 8, local_size_y = 8) in;
 
-layout(binding = 0) uniform sampler2D uAlbedo;
-layout(binding = 1) uniform sampler2D uNormal;
-layout(binding = 2) uniform sampler2D uPosition;
-layout(binding = 3) uniform sampler2D uEmissive;
-layout(binding = 4) uniform sampler2D uDirect;
-layout(binding = 5) uniform sampler2D uDebugImage;  // a debug view's linear colour, shown as it is
-layout(binding = 6) uniform sampler2D uIndirect;    // indirect irradiance (rgb), visibility (a)
-layout(rgba32f, binding = 0) uniform writeonly image2D uHdr;
-layout(rgba8, binding = 1) uniform writeonly image2D uLdr;
+layout(binding = TEXTURE_GBUFFER_ALBEDO) uniform sampler2D uAlbedo;
+layout(binding = TEXTURE_GBUFFER_NORMAL) uniform sampler2D uNormal;
+layout(binding = TEXTURE_GBUFFER_POSITION) uniform sampler2D uPosition;
+layout(binding = TEXTURE_GBUFFER_EMISSIVE) uniform sampler2D uEmissive;
+layout(binding = TEXTURE_DIRECT) uniform sampler2D uDirect;
+layout(binding = TEXTURE_DEBUG_IMAGE) uniform sampler2D uDebugImage;  // a debug view's linear colour, shown as it is
+layout(binding = TEXTURE_INDIRECT) uniform sampler2D uIndirect;    // indirect irradiance (rgb), visibility (a)
+layout(rgba32f, binding = IMAGE_HDR) uniform writeonly image2D uHdr;
+layout(rgba8, binding = IMAGE_LDR) uniform writeonly image2D uLdr;
 
 const int AOV_FINAL = 0;
 const int AOV_DIRECT = 1;
@@ -57,7 +58,7 @@ void main() {
         ldr = vec3(sky ? 0.0 : 1.0 - clamp(depth / uDepthScale, 0.0, 1.0));
     } else if (uAov == AOV_INDIRECT) {
         hdr = (sky || uHasIndirect == 0) ? vec3(0.0) : texelFetch(uIndirect, pixel, 0).rgb;  // irradiance, W/m²
-        ldr = linearToSrgb(toneCurve(hdr / 3.14159265 * uExposure, uToneCurve));
+        ldr = linearToSrgb(toneCurve(hdr / PI * uExposure, uToneCurve));
     } else if (uAov == AOV_AO) {
         hdr = vec3(sky || uHasIndirect == 0 ? 1.0 : texelFetch(uIndirect, pixel, 0).a);
         ldr = hdr;
@@ -69,7 +70,7 @@ void main() {
         if (uAov == AOV_FINAL && !sky) {
             // Lambertian: outgoing radiance = ρ/π × irradiance, added with weight exactly uGiScale.
             if (uHasIndirect != 0)
-                hdr += uGiScale * texelFetch(uAlbedo, pixel, 0).rgb / 3.14159265358979 * texelFetch(uIndirect, pixel, 0).rgb;
+                hdr += uGiScale * texelFetch(uAlbedo, pixel, 0).rgb / PI * texelFetch(uIndirect, pixel, 0).rgb;
         }
         ldr = linearToSrgb(toneCurve(hdr * uExposure, uToneCurve));
     }

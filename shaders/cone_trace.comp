@@ -4,29 +4,30 @@ layout(local_size_x = 8, local_size_y = 8) in;
 // normal march through the radiance bricks. Each cone composites premultiplied radiance front to
 // back; its result times its weight (∫cosθ dω of its region, weights sum to π) adds up to the
 // indirect irradiance E. Output: E (rgb) and ambient visibility (a: 1 = nothing in the way).
+#include "math.glsl"
 #include "voxel_common.glsl"
 #include "octree.glsl"
 #include "bricks_common.glsl"
 #include "octree_march.glsl"
 
-layout(binding = 0) uniform sampler2D uNormal;
-layout(binding = 1) uniform sampler2D uPosition;
+layout(binding = TEXTURE_GBUFFER_NORMAL) uniform sampler2D uNormal;
+layout(binding = TEXTURE_GBUFFER_POSITION) uniform sampler2D uPosition;
 // Radiance (premultiplied L·τ, zero where no light arrived) and opacity come from pools with the
 // same layout: unlit geometry must still block cones, so opacity is the geometry's (the opacity
 // pool), never the radiance pool's.
-layout(binding = 2) uniform sampler3D uBrickRadiance;
-layout(std430, binding = 12) buffer RawRadiance { vec4 rawRadiance[]; };
+layout(binding = TEXTURE_BRICK_RADIANCE) uniform sampler3D uBrickRadiance;
+layout(std430, binding = SSBO_RAW_VALUE) buffer RawRadiance { vec4 rawRadiance[]; };
 // Which way each voxel's reflected light leaves: (N·τ, τ) with N the mean lit-side normal
 // (radiance_normalize), same layout as the radiance pool.
-layout(binding = 4) uniform sampler3D uBrickDirection;
-layout(std430, binding = 24) buffer RawDirection { vec4 rawDirection[]; };
+layout(binding = TEXTURE_BRICK_DIRECTION) uniform sampler3D uBrickDirection;
+layout(std430, binding = SSBO_RAW_DIRECTION) buffer RawDirection { vec4 rawDirection[]; };
 // Optical depth by axis (τx, τy, τz, τ) of the geometry (octree.hpp), same layout.
-layout(binding = 5) uniform sampler3D uBrickOpacity;
-layout(std430, binding = 26) buffer RawOpacity { vec4 rawOpacity[]; };
-layout(rgba32f, binding = 0) uniform writeonly image2D uIndirect;
+layout(binding = TEXTURE_BRICK_OPACITY) uniform sampler3D uBrickOpacity;
+layout(std430, binding = SSBO_RAW_OPACITY) buffer RawOpacity { vec4 rawOpacity[]; };
+layout(rgba32f, binding = IMAGE_INDIRECT) uniform writeonly image2D uIndirect;
 // What the pass did and saved, as 64-bit counts (low, high): samples taken, samples that empty-
 // space skipping saved (the steps the skipped nodes would have cost), pixels that saw the sky.
-layout(std430, binding = 22) buffer Counters { uint counters[6]; };
+layout(std430, binding = SSBO_CONE_COUNTERS) buffer Counters { uint counters[6]; };
 void count64(uint index, uint value) {
     if (value == 0u) return;
     uint old = atomicAdd(counters[index], value);
@@ -34,7 +35,6 @@ void count64(uint index, uint value) {
 }
 uint samplesTaken = 0u, samplesSaved = 0u;
 
-#define MAX_CONES 16
 uniform int uConeCount;
 uniform vec3 uConeDirection[MAX_CONES];  // tangent space, z = normal
 uniform float uConeTanHalfAngle[MAX_CONES];
@@ -192,7 +192,7 @@ void main() {
         irradiance += uConeWeight[c] * cone.rgb;
         occlusion += uConeWeight[c] * cone.a;
     }
-    imageStore(uIndirect, pixel, vec4(irradiance, 1.0 - occlusion / 3.14159265358979));
+    imageStore(uIndirect, pixel, vec4(irradiance, 1.0 - occlusion / PI));
     count64(0u, samplesTaken);
     count64(2u, samplesSaved);
 }

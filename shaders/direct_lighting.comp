@@ -6,10 +6,10 @@
 
 layout(local_size_x = 8, local_size_y = 8) in;
 
-layout(binding = 0) uniform sampler2D uAlbedo;
-layout(binding = 1) uniform sampler2D uNormal;
-layout(binding = 2) uniform sampler2D uPosition;
-layout(rgba32f, binding = 0) uniform image2D uDirect;
+layout(binding = TEXTURE_GBUFFER_ALBEDO) uniform sampler2D uAlbedo;
+layout(binding = TEXTURE_GBUFFER_NORMAL) uniform sampler2D uNormal;
+layout(binding = TEXTURE_GBUFFER_POSITION) uniform sampler2D uPosition;
+layout(rgba32f, binding = IMAGE_DIRECT) uniform image2D uDirect;
 
 uniform LightParams uLight;
 uniform int uAccumulate;

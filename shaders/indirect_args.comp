@@ -2,8 +2,8 @@
 layout(local_size_x = 1) in;
 // Turns a list length counted on the GPU into dispatch arguments (groups of 64, x ≤ 65535), so
 // passes over touched nodes run without reading the count back to the CPU.
-layout(std430, binding = 6) buffer ListCounts { uint listCounts[]; };
-layout(std430, binding = 19) buffer IndirectArgs { uint indirectArgs[]; };
+layout(std430, binding = SSBO_LIST_COUNTS) buffer ListCounts { uint listCounts[]; };
+layout(std430, binding = SSBO_INDIRECT_ARGS) buffer IndirectArgs { uint indirectArgs[]; };
 
 uniform uint uCountSlot;
 uniform uint uArgsSlot;

@@ -8,10 +8,10 @@ layout(local_size_x = 8, local_size_y = 8) in;
 #include "octree.glsl"
 #include "radiance_common.glsl"
 
-layout(binding = 0) uniform sampler2D uLightPosition;  // scene-local, w = 0: no surface
-layout(binding = 1) uniform sampler2D uLightFlux;      // reflected flux per texel / the light's largest
-layout(binding = 2) uniform sampler2D uLightNormal;    // unit normal on the side facing the light
-layout(std430, binding = 9) buffer CellArea { float cellArea[]; };
+layout(binding = TEXTURE_LIGHT_POSITION) uniform sampler2D uLightPosition;  // scene-local, w = 0: no surface
+layout(binding = TEXTURE_LIGHT_FLUX) uniform sampler2D uLightFlux;      // reflected flux per texel / the light's largest
+layout(binding = TEXTURE_LIGHT_NORMAL) uniform sampler2D uLightNormal;    // unit normal on the side facing the light
+layout(std430, binding = SSBO_CELL_AREA) buffer CellArea { float cellArea[]; };
 
 uniform vec3 uVoxelOrigin;  // scene-local position of voxel (0,0,0)
 uniform float uVoxelScale;  // voxels per scene-local unit

@@ -6,7 +6,7 @@ layout(local_size_x = 64) in;
 #include "octree.glsl"
 #include "radiance_common.glsl"
 
-layout(std430, binding = 11) buffer CellEmissive { vec4 cellEmissive[]; };
+layout(std430, binding = SSBO_CELL_EMISSIVE) buffer CellEmissive { vec4 cellEmissive[]; };
 
 void main() {
     uint cell = linearInvocation();

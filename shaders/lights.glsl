@@ -1,6 +1,6 @@
 // Light evaluation in physical units, the GLSL twin of engine/scene/light.hpp (DESIGN 5.3).
 
-const float PI = 3.14159265358979323846;
+#include "math.glsl"
 const int LIGHT_DIRECTIONAL = 0;
 const int LIGHT_SPOT = 1;
 

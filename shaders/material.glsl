@@ -1,6 +1,6 @@
 // Material inputs set by GpuScene::draw() for every draw range, and the base-colour lookup that
 // every rasterizing pass shares (G-buffer, light-view map, voxelization).
-uniform sampler2D uBaseColorTexture;
+layout(binding = TEXTURE_BASE_COLOR) uniform sampler2D uBaseColorTexture;
 uniform vec4 uBaseColor;    // linear albedo, alpha
 uniform vec3 uEmissive;     // emitted radiance W/(m²·sr)
 uniform float uAlphaCutoff; // < 0: opaque material

@@ -6,19 +6,18 @@
 // contiguously from nodeChild[n], only those that exist, in slot order; nodeMask[n] has bit
 // s = x | y<<1 | z<<2 set for each existing child slot. No atomics decide where a node goes, so
 // the pool is bit-identical from run to run.
-#define MAX_LEVELS 11
 const uint NONE = 0xFFFFFFFFu;
 
-layout(std430, binding = 1) buffer NodeChild { uint nodeChild[]; };
-layout(std430, binding = 2) buffer NodeMask { uint nodeMask[]; };
-layout(std430, binding = 3) buffer NodeCoord { uint nodeCoord[]; };    // packCell of the coordinate at its level
-layout(std430, binding = 4) buffer NodeParent { uint nodeParent[]; };
-layout(std430, binding = 5) buffer NodeNeighbour { uint nodeNeighbour[]; };  // 6 per node: −x +x −y +y −z +z
+layout(std430, binding = SSBO_NODE_CHILD) buffer NodeChild { uint nodeChild[]; };
+layout(std430, binding = SSBO_NODE_MASK) buffer NodeMask { uint nodeMask[]; };
+layout(std430, binding = SSBO_NODE_COORD) buffer NodeCoord { uint nodeCoord[]; };    // packCell of the coordinate at its level
+layout(std430, binding = SSBO_NODE_PARENT) buffer NodeParent { uint nodeParent[]; };
+layout(std430, binding = SSBO_NODE_NEIGHBOUR) buffer NodeNeighbour { uint nodeNeighbour[]; };  // 6 per node: −x +x −y +y −z +z
 
 uniform int uLevels;                    // L: cells are level L, leaves level L − 1
 uniform int uLevel;                     // the level a per-level pass works on
-uniform uint uLevelStart[MAX_LEVELS + 1];
-uniform uint uLevelCount[MAX_LEVELS + 1];
+uniform uint uLevelStart[MAX_OCTREE_LEVELS + 1];
+uniform uint uLevelCount[MAX_OCTREE_LEVELS + 1];
 
 // Child slot of a coordinate given at `level` (its lowest bit per axis).
 uint childSlot(uvec3 coordAtLevel) { return (coordAtLevel.x & 1u) | ((coordAtLevel.y & 1u) << 1) | ((coordAtLevel.z & 1u) << 2); }

@@ -4,8 +4,8 @@
 // adds the scanned block sums back. The driver recurses on the block sums.
 layout(local_size_x = 256) in;
 
-layout(std430, binding = 0) buffer Values { uint values[]; };
-layout(std430, binding = 1) buffer BlockSums { uint blockSums[]; };
+layout(std430, binding = SSBO_PREFIX_VALUES) buffer Values { uint values[]; };
+layout(std430, binding = SSBO_PREFIX_BLOCK_SUMS) buffer BlockSums { uint blockSums[]; };
 
 uniform uint uCount;
 uniform int uPhase;

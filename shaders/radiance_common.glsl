@@ -1,22 +1,23 @@
 // Buffers of the radiance volume (engine/lighting/radiance_volume.hpp). Requires octree.glsl.
-layout(std430, binding = 6) buffer ListCounts { uint listCounts[]; };  // touched [0..11], border [12..23], missed [24]
+// Touched counts per level from 0, border counts from BORDER_COUNT_SLOT, then missed photons.
+layout(std430, binding = SSBO_LIST_COUNTS) buffer ListCounts { uint listCounts[]; };
 // Per cell: reflected flux R, G, B as 64-bit fixed point (low, high words) [0..5]; the lit-side
 // normals of the photons summed as two's-complement integers × LIT_NORMAL_SCALE [6..8]; the
 // photon count [9].
-const uint ACCUMULATOR_WORDS = 10u;
+const uint ACCUMULATOR_WORDS = RADIANCE_ACCUMULATOR_WORDS;
 const float LIT_NORMAL_SCALE = 31.0;  // 2^31 / 31: 69 M photons per voxel before a sum could wrap
-layout(std430, binding = 13) buffer RadianceAccumulators { uint radianceAccumulator[]; };
-layout(std430, binding = 14) buffer TouchedFlag { uint touchedFlag[]; };
-layout(std430, binding = 15) buffer TouchedList { uint touchedList[]; };
-layout(std430, binding = 16) buffer BorderFlag { uint borderFlag[]; };
-layout(std430, binding = 17) buffer BorderList { uint borderList[]; };
-layout(std430, binding = 18) buffer CellRadiance { vec4 cellRadiance[]; };  // premultiplied (L·τ, τ)
+layout(std430, binding = SSBO_RADIANCE_ACCUMULATORS) buffer RadianceAccumulators { uint radianceAccumulator[]; };
+layout(std430, binding = SSBO_TOUCHED_FLAG) buffer TouchedFlag { uint touchedFlag[]; };
+layout(std430, binding = SSBO_TOUCHED_LIST) buffer TouchedList { uint touchedList[]; };
+layout(std430, binding = SSBO_BORDER_FLAG) buffer BorderFlag { uint borderFlag[]; };
+layout(std430, binding = SSBO_BORDER_LIST) buffer BorderList { uint borderList[]; };
+layout(std430, binding = SSBO_CELL_RADIANCE) buffer CellRadiance { vec4 cellRadiance[]; };  // premultiplied (L·τ, τ)
 // The mean lit-side normal of the voxel's reflected light (radiance_normalize), premultiplied
-// (N·τ, τ); bound at 18 in place of CellRadiance when the brick passes filter it.
-layout(std430, binding = 23) buffer CellDirection { vec4 cellDirection[]; };
+// (N·τ, τ); bound at SSBO_CELL_RADIANCE in place of CellRadiance when the brick passes filter it.
+layout(std430, binding = SSBO_CELL_DIRECTION) buffer CellDirection { vec4 cellDirection[]; };
 
-const uint BORDER_COUNTS = 12u;
-const uint MISSED_COUNT = 24u;
+const uint BORDER_COUNTS = BORDER_COUNT_SLOT;
+const uint MISSED_COUNT = MISSED_COUNT_SLOT;
 
 // Marks `node` of `level` touched; the first to do so appends it to the level's list.
 void touch(uint node, int level) {

@@ -13,9 +13,9 @@ layout(local_size_x = 64) in;
 #include "radiance_common.glsl"
 #include "work_list.glsl"
 
-layout(std430, binding = 7) buffer CellAlbedo { uint cellAlbedo[]; };
-layout(std430, binding = 9) buffer CellArea { float cellArea[]; };
-layout(std430, binding = 11) buffer CellEmissive { vec4 cellEmissive[]; };
+layout(std430, binding = SSBO_CELL_VALUES) buffer CellAlbedo { uint cellAlbedo[]; };
+layout(std430, binding = SSBO_CELL_AREA) buffer CellArea { float cellArea[]; };
+layout(std430, binding = SSBO_CELL_EMISSIVE) buffer CellEmissive { vec4 cellEmissive[]; };
 
 uniform double uRadiancePerUnit;  // watts of one fixed-point unit / (π · one voxel face in scene units²)
 uniform int uHasEmissive;

@@ -1,6 +1,6 @@
 // Shadow lookup in a light-view map with reversed depth (nearest surface = largest depth).
 // Requires lights.glsl.
-uniform sampler2DShadow uShadowMap;  // compare mode GL_GEQUAL: 1 where ref ≥ stored (lit)
+layout(binding = TEXTURE_SHADOW_MAP) uniform sampler2DShadow uShadowMap;  // compare mode GL_GEQUAL: 1 where ref ≥ stored (lit)
 uniform mat4 uLightViewProjection;
 uniform float uShadowTexelSize;      // texel edge in metres (directional) or at distance 1 (spot)
 uniform int uShadowPerspective;

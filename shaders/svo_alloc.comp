@@ -5,7 +5,7 @@ layout(local_size_x = 64) in;
 // that into an exclusive prefix sum; uPhase 1 turns the prefix into the first-child index.
 #include "octree.glsl"
 
-layout(std430, binding = 6) buffer Counts { uint counts[]; };
+layout(std430, binding = SSBO_CHILD_COUNTS) buffer Counts { uint counts[]; };
 uniform int uPhase;
 
 void main() {

@@ -5,8 +5,8 @@ layout(local_size_x = 64) in;
 #include "voxel_common.glsl"
 #include "octree.glsl"
 
-layout(rgba32ui, binding = 0) uniform readonly uimageBuffer uFragments;
-layout(r32ui, binding = 1) uniform uimageBuffer uFragmentNode;
+layout(rgba32ui, binding = IMAGE_FRAGMENTS) uniform readonly uimageBuffer uFragments;
+layout(r32ui, binding = IMAGE_FRAGMENT_NODE) uniform uimageBuffer uFragmentNode;
 
 uniform uint uFragmentCount;
 

@@ -10,17 +10,16 @@ layout(local_size_x = 64) in;
 #include "voxel_common.glsl"
 #include "octree.glsl"
 
-layout(rgba32ui, binding = 0) uniform readonly uimageBuffer uFragments;
-layout(r32ui, binding = 1) uniform readonly uimageBuffer uFragmentNode;  // the fragment's cell node
-layout(std430, binding = 21) buffer Materials { vec4 materials[]; };  // {baseColor, emissive} per material
-layout(r32ui, binding = 3) uniform uimageBuffer uAccumulators;  // ACC_FIELDS per cell
-layout(r32ui, binding = 4) uniform uimageBuffer uProjectedArea;  // 6 per cell: x, y, z, 64-bit each
+layout(rgba32ui, binding = IMAGE_FRAGMENTS) uniform readonly uimageBuffer uFragments;
+layout(r32ui, binding = IMAGE_FRAGMENT_NODE) uniform readonly uimageBuffer uFragmentNode;  // the fragment's cell node
+layout(std430, binding = SSBO_MATERIALS) buffer Materials { vec4 materials[]; };  // {baseColor, emissive} per material
+layout(r32ui, binding = IMAGE_CELL_ACCUMULATORS) uniform uimageBuffer uAccumulators;  // CELL_ACCUMULATOR_FIELDS per cell
+layout(r32ui, binding = IMAGE_PROJECTED_AREA) uniform uimageBuffer uProjectedArea;  // PROJECTED_AREA_FIELDS per cell: x, y, z, 64-bit each
 
 uniform uint uFragmentCount;
 uniform int uHasEmissive;
 uniform float uEmissiveScale;  // fixed-point units per unit of radiance
 
-const int ACC_FIELDS = 16;
 const float AREA_SCALE = 16777216.0;  // 2^24 units per voxel face
 
 void add64(int base, uint value) {
@@ -33,7 +32,7 @@ void main() {
     if (f >= uFragmentCount) return;
     uvec4 fragment = imageLoad(uFragments, int(f));
     uint cell = imageLoad(uFragmentNode, int(f)).x - uLevelStart[uLevels];
-    int base = int(cell) * ACC_FIELDS;
+    int base = int(cell) * CELL_ACCUMULATOR_FIELDS;
     uint material = fragment.w >> 16;
     float area = unpackHalf2x16(fragment.w & 0xFFFFu).x;
     vec3 albedo = clamp(unpackUnorm4x8(fragment.y).rgb * materials[2u * material].rgb, 0.0, 1.0);
@@ -50,7 +49,7 @@ void main() {
     vec3 projected = area * abs(unpackNormal(fragment.z));
     for (int c = 0; c < 3; ++c) {
         uint value = uint(round(projected[c] * AREA_SCALE));
-        int index = int(cell) * 6 + 2 * c;
+        int index = int(cell) * PROJECTED_AREA_FIELDS + 2 * c;
         uint old = imageAtomicAdd(uProjectedArea, index, value);
         if (old + value < old) imageAtomicAdd(uProjectedArea, index + 1, 1u);
     }

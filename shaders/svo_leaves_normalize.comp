@@ -6,23 +6,22 @@ layout(local_size_x = 64) in;
 #include "voxel_common.glsl"
 #include "octree.glsl"
 
-layout(r32ui, binding = 3) uniform readonly uimageBuffer uAccumulators;
-layout(r32ui, binding = 4) uniform readonly uimageBuffer uProjectedArea;  // 6 per cell
-layout(std430, binding = 6) buffer Status { uint overflowCells; uint maxFragmentsInCell; };
-layout(std430, binding = 7) buffer CellAlbedo { uint cellAlbedo[]; };    // RGBA8: albedo, opacity
-layout(std430, binding = 8) buffer CellNormal { uint cellNormal[]; };    // octahedral
-layout(std430, binding = 9) buffer CellArea { float cellArea[]; };       // voxel-face units
-layout(std430, binding = 10) buffer CellFragments { uint cellFragments[]; };
+layout(r32ui, binding = IMAGE_CELL_ACCUMULATORS) uniform readonly uimageBuffer uAccumulators;
+layout(r32ui, binding = IMAGE_PROJECTED_AREA) uniform readonly uimageBuffer uProjectedArea;  // PROJECTED_AREA_FIELDS per cell
+layout(std430, binding = SSBO_LEAF_STATUS) buffer Status { uint overflowCells; uint maxFragmentsInCell; };
+layout(std430, binding = SSBO_CELL_VALUES) buffer CellAlbedo { uint cellAlbedo[]; };    // RGBA8: albedo, opacity
+layout(std430, binding = SSBO_CELL_NORMAL) buffer CellNormal { uint cellNormal[]; };    // octahedral
+layout(std430, binding = SSBO_CELL_AREA) buffer CellArea { float cellArea[]; };       // voxel-face units
+layout(std430, binding = SSBO_CELL_FRAGMENTS) buffer CellFragments { uint cellFragments[]; };
 // Float, not half: emission may be anything from 1e-9 to 1e9 W/(m²·sr) (half floats flushed dim
 // emission to 0 and turned bright emission into Inf).
-layout(std430, binding = 11) buffer CellEmissive { vec4 cellEmissive[]; };  // RGB, 0
+layout(std430, binding = SSBO_CELL_EMISSIVE) buffer CellEmissive { vec4 cellEmissive[]; };  // RGB, 0
 // Opacity by direction (octree.hpp): a floor blocks a ray crossing it, not one running along it.
-layout(std430, binding = 25) buffer CellOpacity { uint cellOpacity[]; };  // RGBA8 (αx, αy, αz, α)
+layout(std430, binding = SSBO_CELL_OPACITY) buffer CellOpacity { uint cellOpacity[]; };  // RGBA8 (αx, αy, αz, α)
 
 uniform int uHasEmissive;
 uniform float uEmissiveScale;
 
-const int ACC_FIELDS = 16;
 const double AREA_SCALE = 16777216.0;
 const uint MAX_EXACT_FRAGMENTS = 16843009u;  // 255 · n < 2^32
 
@@ -33,7 +32,7 @@ double load64(int base) {
 void main() {
     uint cell = linearInvocation();
     if (cell >= uLevelCount[uLevels]) return;
-    int base = int(cell) * ACC_FIELDS;
+    int base = int(cell) * CELL_ACCUMULATOR_FIELDS;
     uint count = imageLoad(uAccumulators, base).x;
     if (count > MAX_EXACT_FRAGMENTS) atomicAdd(overflowCells, 1u);
     atomicMax(maxFragmentsInCell, count);
@@ -48,7 +47,7 @@ void main() {
     cellArea[cell] = area;
     vec3 projected;
     for (int c = 0; c < 3; ++c) {
-        int index = int(cell) * 6 + 2 * c;
+        int index = int(cell) * PROJECTED_AREA_FIELDS + 2 * c;
         projected[c] = float((double(imageLoad(uProjectedArea, index).x) +
                               4294967296.0lf * double(imageLoad(uProjectedArea, index + 1).x)) / AREA_SCALE);
     }

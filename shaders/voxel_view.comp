@@ -11,13 +11,13 @@ layout(local_size_x = 8, local_size_y = 8) in;
 #include "bricks_common.glsl"
 #include "octree_march.glsl"
 
-layout(rgba32f, binding = 0) uniform writeonly image2D uOutput;
-layout(binding = 0) uniform sampler3D uBrickAlbedo;
-layout(std430, binding = 7) buffer CellAlbedo { uint cellAlbedo[]; };
-layout(std430, binding = 18) buffer CellRadiance { vec4 cellRadiance[]; };
-layout(binding = 1) uniform sampler3D uBrickOpacity;  // the albedo pool: opacity is the geometry's
-layout(std430, binding = 20) buffer RawOpacity { vec4 rawOpacity[]; };
-layout(std430, binding = 12) buffer RawValue { vec4 rawValue[]; };
+layout(rgba32f, binding = IMAGE_VOXEL_VIEW) uniform writeonly image2D uOutput;
+layout(binding = TEXTURE_VIEW_BRICKS) uniform sampler3D uBrickAlbedo;
+layout(std430, binding = SSBO_CELL_VALUES) buffer CellAlbedo { uint cellAlbedo[]; };
+layout(std430, binding = SSBO_CELL_RADIANCE) buffer CellRadiance { vec4 cellRadiance[]; };
+layout(binding = TEXTURE_VIEW_ALBEDO_BRICKS) uniform sampler3D uBrickOpacity;  // the albedo pool: opacity is the geometry's
+layout(std430, binding = SSBO_RAW_ALBEDO) buffer RawOpacity { vec4 rawOpacity[]; };
+layout(std430, binding = SSBO_RAW_VALUE) buffer RawValue { vec4 rawValue[]; };
 
 uniform vec3 uEyeVoxel;      // camera position in voxel space
 uniform vec3 uForward, uRight, uUp;  // camera basis (voxel space = scaled scene-local, same directions)

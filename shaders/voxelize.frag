@@ -19,10 +19,10 @@ flat in vec3 gN0;
 flat in vec3 gN1;
 flat in vec3 gN2;
 
-layout(std430, binding = 0) buffer FragmentCounter { uint fragmentCount; };
+layout(std430, binding = SSBO_FRAGMENT_COUNTER) buffer FragmentCounter { uint fragmentCount; };
 // Per fragment: cell, texture colour RGBA8 (the material's colour factor and emission are applied
 // by svo_leaves), normal (octahedral), material index << 16 | area (half float).
-layout(rgba32ui, binding = 0) uniform writeonly uimageBuffer uFragments;
+layout(rgba32ui, binding = IMAGE_FRAGMENTS) uniform writeonly uimageBuffer uFragments;
 
 uniform uint uCapacity;
 uniform int uResolution;
@@ -88,10 +88,10 @@ void main() {
     float s = (r.x * e2.y - r.y * e2.x) * invDet;
     float t = (e1.x * r.y - e1.y * r.x) * invDet;
     // s, t are inside the triangle up to rounding, which in a needle-thin triangle can be large.
-    // Only the normal is clamped back into it: clamping the texture coordinates too made llvmpipe
-    // (Mesa 22.3) run this pass 35-70x slower on Sponza and change 16k alpha-mask decisions on its
-    // plants, against the same decisions from exactly interpolated barycentrics (measured
-    // 2026-11-21; see commit message). A slightly extrapolated uv only shifts a texel.
+    // Only the normal is clamped back into it: clamping the texture coordinates too makes llvmpipe
+    // (Mesa 22.3) run this pass tens of times slower on Sponza and changes alpha-mask decisions on
+    // its plants that exactly interpolated barycentrics agree with. A slightly extrapolated uv only
+    // shifts a texel.
     vec2 uv = gUv0 + s * (gUv1 - gUv0) + t * (gUv2 - gUv0);
     vec2 dUvdx = (e2.y * (gUv1 - gUv0) - e1.y * (gUv2 - gUv0)) * invDet;
     vec2 dUvdy = (-e2.x * (gUv1 - gUv0) + e1.x * (gUv2 - gUv0)) * invDet;

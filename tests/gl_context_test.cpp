@@ -5,6 +5,7 @@
 #include "core/error.hpp"
 #include "gl/context.hpp"
 #include "gl/shader.hpp"
+#include "gl/shader_interface.hpp"
 #include "test_util.hpp"
 
 using namespace vct;
@@ -46,12 +47,41 @@ TEST(Shader, IncludesExpandOnceWithLineDirectives) {
     unsetenv("VCT_SHADER_DIR");
     ASSERT_EQ(source.files.size(), 2u);
     EXPECT_EQ(source.files[1], "a.glsl");
-    // #version first, then the define, and exactly one copy of a.glsl.
-    EXPECT_EQ(source.text.rfind("#version 450\n#define FOO 1\n", 0), 0u) << source.text;
+    // #version first, then the shader interface's names, then the caller's define, and exactly
+    // one copy of a.glsl.
+    EXPECT_EQ(source.text.rfind("#version 450\n#define ", 0), 0u) << source.text;
+    const auto interfaceName = source.text.find("#define SSBO_NODE_CHILD " + std::to_string(gl::SSBO_NODE_CHILD) + "\n");
+    const auto define = source.text.find("#define FOO 1\n");
+    EXPECT_NE(interfaceName, std::string::npos);
+    EXPECT_NE(define, std::string::npos);
+    EXPECT_LT(interfaceName, define);
     const auto first = source.text.find("const float A");
     EXPECT_NE(first, std::string::npos);
     EXPECT_EQ(source.text.find("const float A", first + 1), std::string::npos);
     EXPECT_NE(source.text.find("#line 1 1\n"), std::string::npos);
+}
+
+TEST(Shader, BindingsNamedInTheShaderInterfaceAreTheOnesCppBinds) {
+    // A shader that declares its buffer and image by the interface's names; the linked program
+    // reports the binding points C++ uses.
+    const auto dir = test::testDir();
+    std::ofstream(dir / "bindings.comp")
+        << "#version 450\nlayout(local_size_x = 1) in;\n"
+           "layout(std430, binding = SSBO_CELL_AREA) buffer CellArea { float cellArea[]; };\n"
+           "layout(binding = TEXTURE_BRICK_OPACITY) uniform sampler3D uOpacity;\n"
+           "void main() { cellArea[0] = texture(uOpacity, vec3(0.5)).x; }\n";
+    auto context = gl::createContext(gl::Backend::OSMesa);
+    setenv("VCT_SHADER_DIR", dir.c_str(), 1);
+    const gl::Program program = gl::buildProgram({{GL_COMPUTE_SHADER, "bindings.comp"}});
+    unsetenv("VCT_SHADER_DIR");
+    const GLuint block = glGetProgramResourceIndex(program.id(), GL_SHADER_STORAGE_BLOCK, "CellArea");
+    const GLenum property = GL_BUFFER_BINDING;
+    GLint binding = -1;
+    glGetProgramResourceiv(program.id(), GL_SHADER_STORAGE_BLOCK, block, 1, &property, 1, nullptr, &binding);
+    EXPECT_EQ(binding, GLint(gl::SSBO_CELL_AREA));
+    GLint unit = -1;
+    glGetUniformiv(program.id(), glGetUniformLocation(program.id(), "uOpacity"), &unit);
+    EXPECT_EQ(unit, GLint(gl::TEXTURE_BRICK_OPACITY));
 }
 
 TEST(Shader, CompileErrorNamesFileAndLine) {

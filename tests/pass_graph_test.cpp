@@ -11,12 +11,12 @@ using namespace vct;
 
 namespace {
 
-using Names = std::set<std::string>;
+using Names = std::set<Pass>;
 
 Names ran(const Renderer& renderer) {
     Names names;
     for (const PassRun& p : renderer.lastFrame())
-        if (p.ran) names.insert(p.name);
+        if (p.ran) names.insert(p.pass);
     return names;
 }
 
@@ -29,9 +29,9 @@ RenderSettings smallSettings() {
     return s;
 }
 
-const Names kEverything = {"voxelize", "svo_build", "svo_leaves", "svo_neighbours", "bricks", "bricks_mip",
-                           "light_view", "inject", "radiance_mip", "radiance_border", "gbuffer", "direct_lighting",
-                           "cone_trace", "composite"};
+const Names kEverything = {Pass::Voxelize, Pass::SvoBuild, Pass::SvoLeaves, Pass::SvoNeighbours, Pass::Bricks, Pass::BricksMip,
+                           Pass::LightView, Pass::Inject, Pass::RadianceMip, Pass::RadianceBorder, Pass::GBuffer, Pass::DirectLighting,
+                           Pass::ConeTrace, Pass::Composite};
 
 Camera moved(Camera c) {
     c.eye += glm::dvec3(0.1, 0.0, 0.0);
@@ -62,54 +62,54 @@ TEST_F(PassGraphTest, EachChangeRerunsExactlyItsDependentPasses) {
     EXPECT_EQ(ran(renderer), Names{}) << "nothing changed: no GPU work";
 
     renderer.renderFrame(moved(camera));
-    EXPECT_EQ(ran(renderer), (Names{"gbuffer", "direct_lighting", "cone_trace", "composite"})) << "camera moved";
+    EXPECT_EQ(ran(renderer), (Names{Pass::GBuffer, Pass::DirectLighting, Pass::ConeTrace, Pass::Composite})) << "camera moved";
 
     renderer.setLights(turned(renderer.lights()));
     renderer.renderFrame(moved(camera));
-    EXPECT_EQ(ran(renderer), (Names{"light_view", "inject", "radiance_mip", "radiance_border", "direct_lighting",
-                                    "cone_trace", "composite"}))
+    EXPECT_EQ(ran(renderer), (Names{Pass::LightView, Pass::Inject, Pass::RadianceMip, Pass::RadianceBorder, Pass::DirectLighting,
+                                    Pass::ConeTrace, Pass::Composite}))
         << "light moved";
 
     std::vector<Light> brighter = renderer.lights();
     brighter[0].intensity *= 2.0;
     renderer.setLights(brighter);
     renderer.renderFrame(moved(camera));
-    EXPECT_EQ(ran(renderer), (Names{"light_view", "inject", "radiance_mip", "radiance_border", "direct_lighting",
-                                    "cone_trace", "composite"}))
+    EXPECT_EQ(ran(renderer), (Names{Pass::LightView, Pass::Inject, Pass::RadianceMip, Pass::RadianceBorder, Pass::DirectLighting,
+                                    Pass::ConeTrace, Pass::Composite}))
         << "light intensity changed";
 
     Material red = scene_.materials[0];
     red.baseColor = {0.9f, 0.1f, 0.1f};
     renderer.setMaterial(0, red);
     renderer.renderFrame(moved(camera));
-    EXPECT_EQ(ran(renderer), (Names{"svo_leaves", "bricks", "bricks_mip", "light_view", "inject", "radiance_mip",
-                                    "radiance_border", "gbuffer", "direct_lighting", "cone_trace", "composite"}))
+    EXPECT_EQ(ran(renderer), (Names{Pass::SvoLeaves, Pass::Bricks, Pass::BricksMip, Pass::LightView, Pass::Inject, Pass::RadianceMip,
+                                    Pass::RadianceBorder, Pass::GBuffer, Pass::DirectLighting, Pass::ConeTrace, Pass::Composite}))
         << "a material's colour changed";
 
     RenderSettings s = renderer.settings();
     s.cones.cones = 9;
     renderer.setSettings(s);
     renderer.renderFrame(moved(camera));
-    EXPECT_EQ(ran(renderer), (Names{"cone_trace", "composite"})) << "cone settings";
+    EXPECT_EQ(ran(renderer), (Names{Pass::ConeTrace, Pass::Composite})) << "cone settings";
 
     s.display.exposureEV += 1.0;
     renderer.setSettings(s);
     renderer.renderFrame(moved(camera));
-    EXPECT_EQ(ran(renderer), (Names{"composite"})) << "exposure";
+    EXPECT_EQ(ran(renderer), (Names{Pass::Composite})) << "exposure";
 
     s.voxelLevels = 6;
     renderer.setSettings(s);
     renderer.renderFrame(moved(camera));
-    EXPECT_EQ(ran(renderer), (Names{"voxelize", "svo_build", "svo_leaves", "svo_neighbours", "bricks", "bricks_mip",
-                                    "inject", "radiance_mip", "radiance_border", "cone_trace", "composite"}))
+    EXPECT_EQ(ran(renderer), (Names{Pass::Voxelize, Pass::SvoBuild, Pass::SvoLeaves, Pass::SvoNeighbours, Pass::Bricks, Pass::BricksMip,
+                                    Pass::Inject, Pass::RadianceMip, Pass::RadianceBorder, Pass::ConeTrace, Pass::Composite}))
         << "voxel levels";
 
     s.gi = false;
     renderer.setSettings(s);
     renderer.renderFrame(moved(camera));
-    EXPECT_EQ(ran(renderer), (Names{"composite"})) << "GI off: only the composite changes";
+    EXPECT_EQ(ran(renderer), (Names{Pass::Composite})) << "GI off: only the composite changes";
     for (const PassRun& p : renderer.lastFrame())
-        if (p.name == "cone_trace") EXPECT_EQ(p.reason, "not needed: GI off");
+        if (p.pass == Pass::ConeTrace) EXPECT_EQ(p.reason, "not needed: GI off");
 
     const Scene other = makeCornellBox();
     s.gi = true;

@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/image.hpp"
+#include "pipeline/frame_passes.hpp"
 #include "scene/light.hpp"
 #include "test_models.hpp"
 #include "test_util.hpp"
@@ -141,15 +142,20 @@ std::vector<std::string> passNames(const nlohmann::json& timings) {
     for (const auto& pass : timings["passes"]) names.push_back(pass["name"]);
     return names;
 }
+std::vector<std::string> passNames(std::initializer_list<Pass> passes) {
+    std::vector<std::string> names;
+    for (Pass p : passes) names.push_back(passName(p));
+    return names;
+}
 }  // namespace
 
 TEST(DirectLighting, TimingsJsonListsEveryPassOfTheGiFrame) {
     // First frame: the octree is built; every pass of DESIGN §4 runs once.
     const auto first = renderTimings("--voxel-levels 5 --frames 1");
     EXPECT_EQ(passNames(first),
-              (std::vector<std::string>{"voxelize", "svo_build", "svo_leaves", "svo_neighbours", "bricks", "bricks_mip",
-                                        "light_view", "inject", "radiance_mip", "radiance_border", "gbuffer",
-                                        "direct_lighting", "cone_trace", "composite"}));
+              passNames({Pass::Voxelize, Pass::SvoBuild, Pass::SvoLeaves, Pass::SvoNeighbours, Pass::Bricks, Pass::BricksMip,
+                                        Pass::LightView, Pass::Inject, Pass::RadianceMip, Pass::RadianceBorder, Pass::GBuffer,
+                                        Pass::DirectLighting, Pass::ConeTrace, Pass::Composite}));
     EXPECT_EQ(first["voxels"]["levels"], 5);
     // Second frame of a static scene: nothing changed, so no pass runs at all, and the graph says so.
     const auto second = renderTimings("--voxel-levels 5 --frames 2");
@@ -175,7 +181,7 @@ TEST(DirectLighting, TimingsJsonListsEveryPass) {
         EXPECT_GE(pass["cpu_ms"].get<double>(), 0.0);
         sum += pass["gpu_ms"].get<double>();
     }
-    EXPECT_EQ(names, (std::vector<std::string>{"light_view", "gbuffer", "direct_lighting", "composite"}));
+    EXPECT_EQ(names, passNames({Pass::LightView, Pass::GBuffer, Pass::DirectLighting, Pass::Composite}));
     EXPECT_GT(timings["total_gpu_ms"].get<double>(), 0.0);
     // Passes run back to back: their sum cannot exceed the frame span by more than rounding.
     EXPECT_LE(sum, timings["total_gpu_ms"].get<double>() + 1e-3);

@@ -1,4 +1,4 @@
-// Stress 4, accumulation limits (README "Robustness"): 10⁵ fragments in one voxel average exactly;
+// Stress 4, accumulation limits (docs/robustness.md): 10⁵ fragments in one voxel average exactly;
 // more than 10⁶ photons in one voxel store the right radiance (64-bit fixed-point sums with
 // carries); light intensities from 1e-6 to 1e6 W/sr (and 1e-20/1e20 on 1e-4/1e15 scenes) give
 // images that scale linearly with the light, the fixed point being chosen automatically.

@@ -1,4 +1,4 @@
-// Stress 8, bad files (README "Robustness", policy "Bad files"): the malformed glTF/GLB/OBJ/MTL
+// Stress 8, bad files (docs/robustness.md, policy "Bad files"): the malformed glTF/GLB/OBJ/MTL
 // and image files of tests/data/bad (made by its make_corpus.py) through the real `vct` command
 // and through loadModelFile in-process. Each ends in one clear error naming the file, or in the
 // documented fallback with a warning — never a crash, another exception or a non-finite scene.
@@ -58,7 +58,7 @@ const std::vector<Expectation> kModels = {
     {"obj_missing_mtl.obj", 0, "Unable to locate material file nothere.mtl"},
     {"obj_unknown_material.obj", 0, "failed to locate material nosuch"},
     {"obj_bad_mtl.obj", 0, "png_truncated.png' of material 'broken' cannot be decoded"},
-    {"obj_bad_texcoord_refs.obj", 0, ""},  // Assimp ignores out-of-range vt/vn indices (see README)
+    {"obj_bad_texcoord_refs.obj", 0, ""},  // Assimp ignores out-of-range vt/vn indices (docs/robustness.md)
 };
 
 // Each committed image as the texture of a quad: a warning, the material's colour instead.

@@ -1,4 +1,4 @@
-// Stress 5, cone marching (README "Robustness"): long cones across a large volume, cones along
+// Stress 5, cone marching (docs/robustness.md): long cones across a large volume, cones along
 // the axes (infinite inverse directions), grazing views, a camera inside solid geometry and
 // pixels that see the sky. Every indirect and AO value is finite and within its bound.
 //

@@ -1,4 +1,4 @@
-// Stress 2, degenerate geometry (README "Robustness"): zero-area, collinear, duplicate-vertex,
+// Stress 2, degenerate geometry (docs/robustness.md): zero-area, collinear, duplicate-vertex,
 // sub-voxel and needle-thin triangles, very long slivers, triangles exactly on voxel boundaries
 // and on the volume's faces. The GPU voxelization has no holes against the exact CPU voxelizer
 // (tests/reference/), no voxel value and no pixel is NaN, and the loader counts and reports the

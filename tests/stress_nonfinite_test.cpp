@@ -1,4 +1,4 @@
-// Stress 3, non-finite input (README "Robustness", policy "Non-finite input"): NaN/Inf (and
+// Stress 3, non-finite input (docs/robustness.md, policy "Non-finite input"): NaN/Inf (and
 // values beyond float's reach) in positions, normals and UVs (glTF with a base64 buffer: OBJ
 // parsers read "nan" texture coordinates as 0), in light and camera parameters, on the command
 // line and through the API. Each is refused with a message naming it, or sanitised and counted;
@@ -234,7 +234,7 @@ TEST(StressNonFinite, LightCameraAndSceneValuesThroughTheApiAreRefused) {
     for (double bad : {nan, inf, 100.0}) {
         RenderSettings settings = renderer.settings();
         settings.display.exposureEV = bad;
-        expectError("exposure", [&] {  // refused by the composite pass: a fresh renderer (see README)
+        expectError("exposure", [&] {  // refused when a renderer takes the settings
             Renderer r(scene, settings);
             r.renderFrame(scene.cameras[0]);
         });

@@ -1,4 +1,4 @@
-// Stress 7, resource limits (README "Robustness", policy "Resource limits"): a request over the
+// Stress 7, resource limits (docs/robustness.md, policy "Resource limits"): a request over the
 // memory budget (--memory-budget MiB / $VCT_MEMORY_BUDGET_MIB) fails before any GPU allocation
 // with the size it needs and the largest settings that fit, and those settings then render
 // within the budget; requests beyond GL's limits fail with the limit; a real GL out-of-memory

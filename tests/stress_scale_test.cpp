@@ -1,4 +1,4 @@
-// Stress 1, scale and offset (README "Robustness"): the Cornell box scaled by 1e-4 and 1e5 and
+// Stress 1, scale and offset (docs/robustness.md): the Cornell box scaled by 1e-4 and 1e5 and
 // translated by 1e6 along each axis voxelizes to the same occupied voxels and renders the same
 // linear HDR image as the unit box. The variants are rebuilt from the box's world-space triangles
 // through buildSceneGeometry (what every loader uses: bounds and origin in double, float

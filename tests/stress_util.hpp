@@ -1,5 +1,5 @@
 #pragma once
-// Helpers shared by the stress suite (tests/stress_*.cpp, README "Robustness"): in-process
+// Helpers shared by the stress suite (tests/stress_*.cpp, docs/robustness.md): in-process
 // rendering through the real Renderer on OSMesa, scene transforms and image statistics.
 #include <gtest/gtest.h>
 

@@ -9,9 +9,8 @@
 #include <vector>
 
 #include "gl/context.hpp"
-#include "render/gpu_scene.hpp"
+#include "pipeline/renderer.hpp"
 #include "scene/scene.hpp"
-#include "voxel/svo_builder.hpp"
 
 namespace vct::test {
 
@@ -63,21 +62,21 @@ class SvoHarness {
 public:
     explicit SvoHarness(const Scene& scene) : scene_(scene) {
         context_ = gl::createContext(gl::Backend::OSMesa);
-        gpuScene_ = std::make_unique<GpuScene>(scene_);
-        builder_ = std::make_unique<SvoBuilder>();
     }
+    // Through the renderer's own octree passes, as `vct info --voxel-levels` does.
     GpuOctreeData build(int levels) {
-        gl::GpuTimer timer;
-        timer.beginFrame();
-        builder_->build(*gpuScene_, scene_, levels, timer);
-        timer.endFrame();
+        RenderSettings settings;
+        settings.width = settings.height = 1;
+        settings.voxelLevels = levels;
+        renderer_ = std::make_unique<Renderer>(scene_, settings);
+        renderer_->buildOctree();
         return read();
     }
-    const SvoBuilder& builder() const { return *builder_; }
+    const SvoBuilder& builder() const { return *renderer_->octree(); }
 
 private:
     GpuOctreeData read() const {
-        const Octree& o = builder_->octree();
+        const Octree& o = builder().octree();
         GpuOctreeData d;
         d.levels = o.levels;
         d.levelStart.assign(o.levelStart.begin(), o.levelStart.end());
@@ -95,7 +94,7 @@ private:
         const glm::ivec3 size = 3 * o.brickPoolBricks;
         d.brickPool.resize(std::size_t(size.x) * size.y * size.z * 4);
         glGetTextureImage(o.brickAlbedo.id(), 0, GL_RGBA, GL_FLOAT, GLsizei(d.brickPool.size() * 4), d.brickPool.data());
-        const FragmentList& f = builder_->fragments();
+        const FragmentList& f = builder().fragments();
         const auto raw = readBuffer<std::uint32_t>(f.data, std::size_t(f.count) * 4);
         for (std::size_t i = 0; i < f.count; ++i) {
             d.fragmentCell.push_back(raw[i * 4]);
@@ -108,8 +107,7 @@ private:
 
     const Scene& scene_;
     std::unique_ptr<gl::Context> context_;
-    std::unique_ptr<GpuScene> gpuScene_;
-    std::unique_ptr<SvoBuilder> builder_;
+    std::unique_ptr<Renderer> renderer_;
 };
 
 // A scene made of raw triangles with one material per triangle group, inside given bounds.

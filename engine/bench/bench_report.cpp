@@ -47,28 +47,12 @@ const BenchRow* defaultRow(const std::vector<BenchRow>& rows) {
     return nullptr;
 }
 
-// Engine pass costs grouped for the markdown table.
-struct PassGroup {
-    const char* title;
-    std::vector<std::string> passes;
-};
-const std::vector<PassGroup>& passGroups() {
-    static const std::vector<PassGroup> groups = {
-        {"octree", {"voxelize", "svo_build", "svo_leaves", "svo_neighbours", "bricks", "bricks_mip"}},
-        {"light_view", {"light_view"}},
-        {"inject + radiance filter", {"inject", "radiance_mip", "radiance_border"}},
-        {"gbuffer", {"gbuffer"}},
-        {"direct_lighting", {"direct_lighting"}},
-        {"cone_trace", {"cone_trace"}},
-        {"composite", {"composite"}},
-    };
-    return groups;
-}
-
-double groupMs(const BenchRow& r, const PassGroup& g) {
+// Engine pass costs summed by the stage of the frame each pass belongs to (the pass table's).
+double stageMs(const BenchRow& r, Stage stage) {
     double ms = 0.0;
     for (const auto& p : r.passes)
-        if (std::find(g.passes.begin(), g.passes.end(), p.name) != g.passes.end()) ms += p.ms();
+        for (const PassDeclaration& pass : framePasses())
+            if (pass.stage == stage && p.name == pass.name) ms += p.ms();
     return ms;
 }
 
@@ -406,15 +390,15 @@ void writeMarkdown(const std::filesystem::path& path, const std::vector<BenchRow
            << num(r->error.relMse, "%.4g") << " | " << num(r->error.psnr, "%.2f") << " | "
            << num(r->error.ssim, "%.4f") << " | " << num(r->error.directRmse, "%.4g") << " | "
            << num(r->error.indirectRmse, "%.4g") << " | " << num(r->error.indirectRelMse, "%.4g") << " |\n";
-    md << "\n## Engine pass costs (ms, fastest full frame; a pass costs max(GPU ms, CPU ms))\n\n| point |";
-    for (const auto& g : passGroups()) md << " " << g.title << " |";
+    md << "\n## Engine pass costs by stage (ms, fastest full frame; a pass costs max(GPU ms, CPU ms))\n\n| point |";
+    for (std::size_t s = 0; s < std::size_t(Stage::Count); ++s) md << " " << stageName(Stage(s)) << " |";
     md << "\n|---|";
-    for (std::size_t i = 0; i < passGroups().size(); ++i) md << "---|";
+    for (std::size_t s = 0; s < std::size_t(Stage::Count); ++s) md << "---|";
     md << "\n";
     for (const auto& r : rows) {
         if (r.kind != "engine") continue;
         md << "| " << r.label << " |";
-        for (const auto& g : passGroups()) md << " " << num(groupMs(r, g), "%.1f") << " |";
+        for (std::size_t s = 0; s < std::size_t(Stage::Count); ++s) md << " " << num(stageMs(r, Stage(s)), "%.1f") << " |";
         md << "\n";
     }
     std::ofstream out(path);

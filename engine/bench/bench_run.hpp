@@ -70,9 +70,6 @@ struct BenchRow {
     bool incrementalIdentical = true;  // engine: step 1's image equals the full frame's
 };
 
-// The octree's passes (excluded from frame_static_ms).
-bool isOctreePass(const std::string& name);
-
 // Errors of an image split into direct and indirect parts against the reference.
 ErrorMetrics measureErrors(const ImageF& final, const ImageF& direct, const ImageF& indirect,
                            const ReferenceImages& reference, const metrics::DisplaySettings& display);

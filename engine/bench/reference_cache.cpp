@@ -113,6 +113,9 @@ std::string referenceKey(const Scene& scene, const Camera& camera, const referen
     h.vec3(camera.target);
     h.vec3(camera.up);
     h.value(camera.fovYDeg);
+    // Every field of Light is part of the key: a field added to Light must be added here too.
+    static_assert(sizeof(Light) == 8 + 3 * sizeof(glm::dvec3) + 4 * sizeof(double),
+                  "Light changed: add its new field to the reference cache key");
     for (const Light& l : scene.lights) {
         h.value(int(l.type));
         h.vec3(l.position);

@@ -77,7 +77,7 @@ void applyParameter(RenderSettings& s, const std::string& name, const Json& v) {
     } else if (name == "bricks") {
         s.bricks = boolean(v, what);
     } else if (name == "light_view_res") {
-        s.lightViewResolution = integer(v, what, 16, 16384);
+        s.lightViewResolution = integer(v, what, 16, kMaxImageSide);
     } else if (name == "pcf_radius") {
         s.pcfRadius = integer(v, what, 0, 8);
     } else if (name == "gi") {
@@ -127,8 +127,8 @@ SweepDefinition parseSweep(const Json& j, const std::string& name, const std::fi
             if (!j["camera"].is_string()) fail("'camera' must be a preset name");
             s.camera = j["camera"].get<std::string>();
         }
-        if (j.contains("width")) s.width = integer(j["width"], "'width'", 1, 16384);
-        if (j.contains("height")) s.height = integer(j["height"], "'height'", 1, 16384);
+        if (j.contains("width")) s.width = integer(j["width"], "'width'", 1, kMaxImageSide);
+        if (j.contains("height")) s.height = integer(j["height"], "'height'", 1, kMaxImageSide);
         if (j.contains("exposure")) s.exposureEV = number(j["exposure"], "'exposure'", -64, 64);
         if (j.contains("tonemap")) {
             if (!j["tonemap"].is_string()) fail("'tonemap' must be aces, reinhard or clamp");

@@ -128,7 +128,7 @@ void run(const BenchOptions& o) {
         p.settings.display.toneCurve = parseToneCurve(sweep.tonemap);
         p.settings.display.giScale = 1.0f;
         try {
-            validateRenderSettings(p.settings);
+            validateRenderSettingsForContext(p.settings);
         } catch (const Error& e) {
             fail("point ", p.label, " of ", sweepFile.string(), ": ", e.what());
         }

@@ -7,8 +7,7 @@
 #include "core/error.hpp"
 #include "gl/context.hpp"
 #include "gl/gl.hpp"
-#include "render/gpu_scene.hpp"
-#include "voxel/svo_builder.hpp"
+#include "pipeline/renderer.hpp"
 
 namespace vct::cli {
 namespace {
@@ -51,14 +50,15 @@ void run(const InfoOptions& o) {
                 r.missingTextures.size());
     for (const auto& t : r.missingTextures) std::printf("  missing texture: %s\n", t.c_str());
     if (o.voxelLevels) {
-        // The octree's real size: build it (on the GPU) and measure.
+        // The octree's real size: build it (on the GPU, through the frame's own passes) and measure.
         auto context = gl::createContext(gl::parseBackend(o.backend));
-        GpuScene gpuScene(scene);
-        SvoBuilder builder;
-        gl::GpuTimer timer;
-        timer.beginFrame();
-        builder.build(gpuScene, scene, o.voxelLevels, timer);
-        timer.endFrame();
+        RenderSettings settings;
+        settings.width = settings.height = 1;
+        settings.voxelLevels = o.voxelLevels;
+        validateRenderSettings(settings);
+        Renderer renderer(scene, settings);
+        renderer.buildOctree();
+        const SvoBuilder& builder = *renderer.octree();
         const VoxelGrid& grid = builder.octree().grid;
         std::printf("voxel grid        %d³, voxel size %.6g (scene units)\n", grid.resolution(), grid.voxelSize);
         std::printf("%s", formatVoxelMemory(builder.memory()).c_str());

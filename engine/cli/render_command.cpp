@@ -8,6 +8,7 @@
 #include "core/error.hpp"
 #include "core/image.hpp"
 #include "core/log.hpp"
+#include "core/math_constants.hpp"
 #include "gl/context.hpp"
 #include "pipeline/renderer.hpp"
 #include "pipeline/timings_report.hpp"
@@ -35,7 +36,7 @@ struct RenderOptions {
 // The lights turned by `turn` (0..1 of a full circle) around the vertical axis through the scene's
 // centre: directions rotate, spot positions orbit.
 std::vector<Light> orbit(const std::vector<Light>& lights, const Scene& scene, double turn) {
-    const double angle = turn * 2.0 * 3.14159265358979323846;
+    const double angle = turn * 2.0 * kPi;
     const double c = std::cos(angle), s = std::sin(angle);
     auto rotate = [&](glm::dvec3 v) { return glm::dvec3(c * v.x + s * v.z, v.y, -s * v.x + c * v.z); };
     std::vector<Light> turned = lights;
@@ -58,22 +59,21 @@ void run(const RenderOptions& o) {
         fail("unknown --light-path '", o.lightPath, "'; the only path is orbit");
     if (!o.cameraPath.empty() && o.cameraPath != "orbit")
         fail("unknown --camera-path '", o.cameraPath, "'; the only path is orbit");
-    if (o.width < 1 || o.height < 1 || o.width > 16384 || o.height > 16384)
-        fail("image size ", o.width, "x", o.height, " is out of range; --width and --height must be within 1..16384");
-    renderSettingsFromOptions(o.render, Scene{});  // bad names fail here, before the scene loads
-
-    const Scene scene = loadSceneFromOptions(o.scene);
-    const Camera camera = cameraFromOptions(o.scene, scene);
-    RenderSettings settings = renderSettingsFromOptions(o.render, scene);
+    // Bad names and values fail here, before the scene loads.
+    RenderSettings settings = renderSettingsFromOptions(o.render, Scene{});
     settings.width = o.width;
     settings.height = o.height;
     settings.fullFrames = o.fullFrames;
+    validateRenderSettings(settings);
+
+    const Scene scene = loadSceneFromOptions(o.scene);
+    const Camera camera = cameraFromOptions(o.scene, scene);
+    // The scene's own display defaults (its exposure) apply once it is loaded.
+    settings.display = renderSettingsFromOptions(o.render, scene).display;
     // Before any GPU allocation: with a memory budget, a frame that would not fit fails here.
     if (o.memoryBudgetMiB) setMemoryBudgetMiB(*o.memoryBudgetMiB);
-    const bool lit = settings.view == ViewMode::Lit;
     checkMemoryBudget(scene, MemoryRequest{settings.width, settings.height, settings.lightViewResolution,
-                                           settings.voxelLevels, settings.gi || !lit,
-                                           (lit && settings.gi) || settings.view == ViewMode::Radiance});
+                                           settings.voxelLevels, needsOctree(settings), needsRadiance(settings)});
 
     auto context = gl::createContext(backend);
     Renderer renderer(scene, settings);
@@ -119,7 +119,7 @@ Run addRenderCommand(CLI::App& app) {
     addSceneOptions(*command, o.scene, true);
     command->add_option("--out,-o", o.out, "output PNG (tone-mapped sRGB)")->capture_default_str();
     command->add_option("--hdr-out", o.hdrOut, "linear float output: .pfm or .exr");
-    command->add_option("--timings", o.timingsOut, "per-pass GPU/CPU timings as JSON (schema in README)");
+    command->add_option("--timings", o.timingsOut, "per-pass GPU/CPU timings as JSON (schema: docs/timings.md)");
     command->add_option("--backend", o.backend, "osmesa (offscreen CPU), egl (headless GPU) or glfw (hidden window)")
         ->capture_default_str();
     command->add_option("--width", o.width, "image width in pixels")->capture_default_str();

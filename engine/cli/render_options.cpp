@@ -47,8 +47,6 @@ RenderSettings renderSettingsFromOptions(const RenderSettingsOptions& o, const S
     settings.display.toneCurve = parseToneCurve(o.toneCurve);
     settings.display.giScale = o.giScale;
     settings.display.exposureEV = o.exposureEV.value_or(scene.exposureEV);
-    if (!std::isfinite(settings.display.exposureEV) || std::abs(settings.display.exposureEV) > kMaxExposureEV)
-        fail("--exposure ", settings.display.exposureEV, " must be a finite number of stops within ±", kMaxExposureEV);
     settings.view = parseViewMode(o.view);
     settings.voxelLevels = o.voxelLevels;
     settings.voxelViewLevel = o.voxelViewLevel;
@@ -57,6 +55,7 @@ RenderSettings renderSettingsFromOptions(const RenderSettingsOptions& o, const S
     settings.gi = o.gi == "on";
     settings.photons = !o.noPhotons;
     settings.cones = o.cones;
+    validateRenderSettings(settings);
     return settings;
 }
 

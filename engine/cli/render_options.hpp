@@ -7,7 +7,7 @@
 
 #include <CLI/CLI.hpp>
 
-#include "pipeline/renderer.hpp"
+#include "pipeline/render_settings.hpp"
 #include "scene/scene.hpp"
 
 namespace vct::cli {
@@ -30,7 +30,8 @@ struct RenderSettingsOptions {
 
 void addRenderSettingsOptions(CLI::App& command, RenderSettingsOptions& options);
 
-// Parses the names (clear errors for bad values); width and height are left at their defaults.
+// Parses the names and checks every value (clear errors, no GL needed); width and height are left
+// at their defaults.
 RenderSettings renderSettingsFromOptions(const RenderSettingsOptions& options, const Scene& scene);
 
 }  // namespace vct::cli

@@ -30,6 +30,7 @@ void run(const ViewOptions& o) {
     if (!std::filesystem::is_directory(options.screenshotDir))
         fail("--screenshot-dir '", o.screenshotDir, "' is not a folder");
     viewer::checkViewerOptions(options);
+    renderSettingsFromOptions(o.render, Scene{});  // bad values fail here, before the scene loads
 
     const Scene scene = loadSceneFromOptions(o.scene);
     const Camera camera = cameraFromOptions(o.scene, scene);
@@ -51,7 +52,7 @@ Run addViewCommand(CLI::App& app) {
         ->capture_default_str();
     command->add_option("--script", o.script,
                         "replay FILE (wait/key/hold/mouse drag/scroll/resize/screenshot/quit, one per line; see "
-                        "README) frame by frame, then exit");
+                        "docs/viewer.md) frame by frame, then exit");
     command->add_option("--screenshot-dir", o.screenshotDir, "folder for F12 screenshots (vct_view_NNNN.png)")
         ->capture_default_str();
     addRenderSettingsOptions(*command, o.render);

@@ -15,6 +15,12 @@
 namespace vct {
 namespace fs = std::filesystem;
 
+void validateImageSize(int width, int height, const char* what) {
+    if (width < 1 || height < 1 || width > kMaxImageSide || height > kMaxImageSide)
+        fail(what, " ", width, "x", height, " is out of range; --width and --height must be within 1..",
+             kMaxImageSide);
+}
+
 namespace {
 void writePfm(const fs::path& path, const ImageF& image) {
     std::ofstream file(path, std::ios::binary);

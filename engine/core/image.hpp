@@ -38,6 +38,11 @@ Image8 readPng(const std::filesystem::path& path);  // any format stb_image read
 void writeHdrImage(const std::filesystem::path& path, const ImageF& image);
 ImageF readHdrImage(const std::filesystem::path& path);
 
+// Largest image side vct accepts anywhere (the GL limits of a context may be lower).
+constexpr int kMaxImageSide = 16384;
+// Throws naming `what` (e.g. "image size") when width × height is outside 1..kMaxImageSide.
+void validateImageSize(int width, int height, const char* what = "image size");
+
 // Throws a clear error when `path`'s folder does not exist or is not writable.
 void ensureWritable(const std::filesystem::path& path);
 

@@ -57,6 +57,9 @@ void Context::initialize(const char* backend, void* (*getProc)(const char*), con
         fail("the ", backend, " backend gave OpenGL ", info_.major, ".", info_.minor, core ? " core" : " compatibility",
              " (", info_.renderer, "); vct needs OpenGL 4.5 core. Update the driver (Mesa ≥ 20 gives 4.5 on "
              "llvmpipe) or try another --backend");
+    // Conventions every pass relies on, set once for the context's lifetime: clip space depth in
+    // [0, 1] for reversed depth (render/view.hpp).
+    glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE);
     const char* env = std::getenv("VCT_GL_DEBUG");
     if (options.debugOutput || (env && std::strcmp(env, "0") != 0)) {
         glEnable(GL_DEBUG_OUTPUT_SYNCHRONOUS);

@@ -1,7 +1,7 @@
 #include "gl/prefix_sum.hpp"
 
 #include "gl/compute.hpp"
-#include "gl/shader.hpp"
+#include "gl/shader_interface.hpp"
 
 namespace vct::gl {
 
@@ -17,23 +17,18 @@ void PrefixSum::scanLevel(GLuint buffer, std::uint32_t count, std::size_t depth)
         blockSums_[depth] = createBuffer(GLsizeiptr(blocks) * 4, nullptr, GL_DYNAMIC_STORAGE_BIT, "prefix sum blocks");
         blockSumCapacity_[depth] = blocks;
     }
-    const GLuint p = program_.id();
-    glUseProgram(p);
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, buffer);
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, blockSums_[depth].id());
-    setUniform(p, "uCount", count);
-    setUniform(p, "uPhase", 0);
-    dispatch1D(count, 256);
-    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+    auto pass = [&](int phase) {
+        ComputeCall(program_)
+            .storage(SSBO_PREFIX_VALUES, buffer)
+            .storage(SSBO_PREFIX_BLOCK_SUMS, blockSums_[depth])
+            .uniform("uCount", count)
+            .uniform("uPhase", phase)
+            .dispatch1D(count, 256, GL_SHADER_STORAGE_BARRIER_BIT);
+    };
+    pass(0);
     if (blocks > 1) {
         scanLevel(blockSums_[depth].id(), blocks, depth + 1);
-        glUseProgram(p);
-        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, buffer);
-        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, blockSums_[depth].id());
-        setUniform(p, "uCount", count);
-        setUniform(p, "uPhase", 1);
-        dispatch1D(count, 256);
-        glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+        pass(1);
     }
 }
 

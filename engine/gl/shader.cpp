@@ -8,6 +8,7 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include "core/error.hpp"
+#include "gl/shader_interface.hpp"
 
 namespace vct::gl {
 namespace fs = std::filesystem;
@@ -26,6 +27,18 @@ std::string readShaderFile(const std::string& file) {
     std::stringstream content;
     content << in.rdbuf();
     return content.str();
+}
+
+// gl/shader_interface.hpp as #define lines, the same for every shader.
+const std::string& shaderInterfaceDefines() {
+    static const std::string text = [] {
+        std::string lines;
+#define VCT_SHADER_INTERFACE_DEFINE(name, value) lines += concat("#define ", #name, " ", value, "\n");
+        VCT_SHADER_INTERFACE(VCT_SHADER_INTERFACE_DEFINE)
+#undef VCT_SHADER_INTERFACE_DEFINE
+        return lines;
+    }();
+    return text;
 }
 
 const std::regex kInclude(R"(^\s*#\s*include\s+"([^"]+)\"\s*$)");
@@ -51,6 +64,7 @@ void expand(const std::string& file, PreprocessedSource& out, std::vector<std::s
         if (std::regex_match(line, kVersion)) {
             if (!isMain) fail("shader '", file, "' line ", number, ": #version belongs only in the main file");
             out.text += line + "\n";
+            out.text += shaderInterfaceDefines();
             for (const auto& define : defines) out.text += "#define " + define + "\n";
             out.text += concat("#line ", number + 1, " ", index, "\n");
             versionSeen = true;

@@ -20,7 +20,8 @@ struct ShaderStage {
 // $VCT_SHADER_DIR if set, else the source tree's shaders/ folder.
 std::filesystem::path shaderDirectory();
 
-// `defines` are inserted after #version as "#define NAME VALUE" lines.
+// After #version come the shader interface's names (gl/shader_interface.hpp) and then `defines`,
+// as "#define NAME VALUE" lines.
 Program buildProgram(const std::vector<ShaderStage>& stages, const std::vector<std::string>& defines = {});
 
 // Exposed for tests: the expanded source and the files it came from (index = GLSL source-string

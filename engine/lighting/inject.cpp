@@ -4,7 +4,7 @@
 #include <cmath>
 
 #include "core/error.hpp"
-#include "gl/shader.hpp"
+#include "core/math_constants.hpp"
 
 namespace vct {
 
@@ -43,48 +43,41 @@ void PhotonInjection::run(const Octree& octree, RadianceVolume& volume, const Sc
 
     const GLbitfield barrier = GL_SHADER_STORAGE_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT;
     if (photons) {
-        const GLuint p = inject_.id();
-        glUseProgram(p);
-        octree.bind(p);
+        gl::ComputeCall inject(inject_);
+        octree.bind(inject.program());
         bindRadianceVolume(volume);
-        gl::setUniform(p, "uVoxelOrigin", glm::vec3(octree.grid.localMin));
-        gl::setUniform(p, "uVoxelScale", float(1.0 / octree.grid.voxelSize));
-        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 9, octree.cellArea.id());
+        inject.uniform("uVoxelOrigin", glm::vec3(octree.grid.localMin))
+            .uniform("uVoxelScale", float(1.0 / octree.grid.voxelSize))
+            .storage(gl::SSBO_CELL_AREA, octree.cellArea);
         for (std::size_t i = 0; i < lightViews.size(); ++i) {
             const LightViewMap& map = lightViews[i];
             // Units for a texel of relative flux 1: ≤ 2^24 (the brightest light), in double first.
             const double units = LightViewMap::maxTexelFlux(lights[i], map.transform()) / volume.wattsPerUnit;
-            gl::setUniform(p, "uUnitsPerRelativeFlux", float(std::min(units, 16777216.0)));
-            glBindTextureUnit(0, map.position());
-            glBindTextureUnit(1, map.flux());
-            glBindTextureUnit(2, map.normal());
-            glDispatchCompute(GLuint((map.resolution() + 7) / 8), GLuint((map.resolution() + 7) / 8), 1);
-            glMemoryBarrier(barrier);
+            inject.uniform("uUnitsPerRelativeFlux", float(std::min(units, 16777216.0)))
+                .texture(gl::TEXTURE_LIGHT_POSITION, map.position())
+                .texture(gl::TEXTURE_LIGHT_FLUX, map.flux())
+                .texture(gl::TEXTURE_LIGHT_NORMAL, map.normal())
+                .dispatchImage(map.resolution(), map.resolution(), barrier);
         }
     }
     if (octree.hasEmissive) {
-        const GLuint p = emissive_.id();
-        glUseProgram(p);
-        octree.bind(p);
+        gl::ComputeCall emissive(emissive_);
+        octree.bind(emissive.program());
         bindRadianceVolume(volume);
-        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 11, octree.cellEmissive.id());
-        glDispatchCompute(GLuint((octree.cellCount() + 63) / 64), 1, 1);
-        glMemoryBarrier(barrier);
+        emissive.storage(gl::SSBO_CELL_EMISSIVE, octree.cellEmissive).dispatch1D(octree.cellCount(), 64, barrier);
     }
-    const GLuint p = normalize_.id();
-    glUseProgram(p);
-    octree.bind(p);
+    gl::ComputeCall normalize(normalize_);
+    octree.bind(normalize.program());
     bindRadianceVolume(volume);
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 7, octree.cellAlbedo.id());
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 9, octree.cellArea.id());
-    if (octree.hasEmissive) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 11, octree.cellEmissive.id());
-    gl::setUniform(p, "uLevel", octree.levels);
+    normalize.storage(gl::SSBO_CELL_VALUES, octree.cellAlbedo)
+        .storage(gl::SSBO_CELL_AREA, octree.cellArea)
+        .uniform("uLevel", octree.levels)
+        .uniform("uHasEmissive", octree.hasEmissive ? 1 : 0);
+    if (octree.hasEmissive) normalize.storage(gl::SSBO_CELL_EMISSIVE, octree.cellEmissive);
     // Watts per unit / (π · voxel face area), in double: radiance = units × this / cell area.
-    glProgramUniform1d(p, glGetUniformLocation(p, "uRadiancePerUnit"),
-                       volume.wattsPerUnit / (3.14159265358979323846 * octree.grid.voxelSize * octree.grid.voxelSize));
-    gl::setUniform(p, "uHasEmissive", octree.hasEmissive ? 1 : 0);
-    listDispatch_.dispatch(volume, kTouchedCountSlot + unsigned(octree.levels));
-    glMemoryBarrier(barrier);
+    glProgramUniform1d(normalize.program(), glGetUniformLocation(normalize.program(), "uRadiancePerUnit"),
+                       volume.wattsPerUnit / (kPi * octree.grid.voxelSize * octree.grid.voxelSize));
+    listDispatch_.dispatch(normalize, volume, kTouchedCountSlot + unsigned(octree.levels), barrier);
     gl::checkErrors("injecting light into the octree");
 }
 

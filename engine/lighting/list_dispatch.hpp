@@ -2,24 +2,25 @@
 // Dispatching a compute pass over a list whose length only the GPU knows (touched or border
 // nodes): a one-thread pass turns the count into dispatch arguments, then
 // glDispatchComputeIndirect runs the real pass. No read-back, no stall.
-#include "gl/objects.hpp"
+#include "gl/compute.hpp"
 #include "lighting/radiance_volume.hpp"
 
 namespace vct {
 
-constexpr unsigned kTouchedCountSlot = 0;   // + level
-constexpr unsigned kBorderCountSlot = 12;   // + level
+constexpr unsigned kTouchedCountSlot = 0;                // + level
+constexpr unsigned kBorderCountSlot = gl::BORDER_COUNT_SLOT;  // + level
 
 class ListDispatch {
 public:
     ListDispatch();
-    // Dispatches the currently bound program over listCounts[countSlot] items in groups of 64.
-    void dispatch(const RadianceVolume& volume, unsigned countSlot);
+    // Dispatches `call`'s program over listCounts[countSlot] items in groups of 64.
+    void dispatch(const gl::ComputeCall& call, const RadianceVolume& volume, unsigned countSlot, GLbitfield barriers);
 
 private:
     gl::Program args_;
 };
 
+// Binds the radiance volume's buffers at their shader interface slots.
 void bindRadianceVolume(const RadianceVolume& volume);
 
 }  // namespace vct

@@ -2,7 +2,6 @@
 
 #include <array>
 
-#include "gl/shader.hpp"
 
 namespace vct {
 namespace {
@@ -27,29 +26,26 @@ std::array<RadianceFilter::Channel, 2> RadianceFilter::channelsOf(const Radiance
 void RadianceFilter::mip(const Octree& octree, RadianceVolume& volume) {
     const auto channels = channelsOf(volume);
     for (int level = octree.levels - 1; level >= 0; --level) {
-        GLuint p = touchParents_.id();
-        glUseProgram(p);
-        octree.bind(p);
+        gl::ComputeCall touch(touchParents_);
+        octree.bind(touch.program());
         bindRadianceVolume(volume);
-        gl::setUniform(p, "uLevel", level);
-        listDispatch_.dispatch(volume, kTouchedCountSlot + unsigned(level + 1));
-        glMemoryBarrier(kBarrier);
+        touch.uniform("uLevel", level);
+        listDispatch_.dispatch(touch, volume, kTouchedCountSlot + unsigned(level + 1), kBarrier);
 
         const bool leafLevel = level == octree.levels - 1;
         for (const Channel& channel : channels) {
-            p = leafLevel ? leaf_.id() : parent_.id();
-            glUseProgram(p);
-            octree.bind(p);
-            setBrickPoolUniforms(p, octree);
+            gl::ComputeCall filter(leafLevel ? leaf_ : parent_);
+            octree.bind(filter.program());
+            setBrickPoolUniforms(filter.program(), octree);
             bindRadianceVolume(volume);
-            glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 18, channel.cells);
-            gl::setUniform(p, "uLevel", level);
-            glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 12, channel.raw);
-            glBindImageTexture(0, channel.partial[level].texture.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+            filter.storage(gl::SSBO_CELL_RADIANCE, channel.cells)
+                .uniform("uLevel", level)
+                .storage(gl::SSBO_RAW_VALUE, channel.raw)
+                .image(gl::IMAGE_PARTIAL_BRICKS, channel.partial[level].texture.id(), GL_WRITE_ONLY, GL_RGBA32F);
             if (!leafLevel)
-                glBindImageTexture(1, channel.partial[level + 1].texture.id(), 0, GL_FALSE, 0, GL_READ_ONLY, GL_RGBA32F);
-            listDispatch_.dispatch(volume, kTouchedCountSlot + unsigned(level));
-            glMemoryBarrier(kBarrier);
+                filter.image(gl::IMAGE_CHILD_PARTIAL_BRICKS, channel.partial[level + 1].texture.id(), GL_READ_ONLY,
+                             GL_RGBA32F);
+            listDispatch_.dispatch(filter, volume, kTouchedCountSlot + unsigned(level), kBarrier);
         }
     }
     gl::checkErrors("filtering radiance up the octree");
@@ -58,19 +54,16 @@ void RadianceFilter::mip(const Octree& octree, RadianceVolume& volume) {
 void RadianceFilter::border(const Octree& octree, RadianceVolume& volume) {
     const auto channels = channelsOf(volume);
     for (int level = 0; level < octree.levels; ++level) {
-        GLuint p = touchBorder_.id();
-        glUseProgram(p);
-        octree.bind(p);
+        gl::ComputeCall touch(touchBorder_);
+        octree.bind(touch.program());
         bindRadianceVolume(volume);
-        gl::setUniform(p, "uLevel", level);
-        listDispatch_.dispatch(volume, kTouchedCountSlot + unsigned(level));
-        glMemoryBarrier(kBarrier);
+        touch.uniform("uLevel", level);
+        listDispatch_.dispatch(touch, volume, kTouchedCountSlot + unsigned(level), kBarrier);
 
         for (const Channel& channel : channels) {
-            channel.completion.prepare(octree, channel.partial[level], channel.pool);
+            const gl::ComputeCall complete = channel.completion.prepare(octree, channel.partial[level], channel.pool);
             bindRadianceVolume(volume);
-            listDispatch_.dispatch(volume, kBorderCountSlot + unsigned(level));
-            glMemoryBarrier(kBarrier | GL_TEXTURE_FETCH_BARRIER_BIT);
+            listDispatch_.dispatch(complete, volume, kBorderCountSlot + unsigned(level), kBarrier | GL_TEXTURE_FETCH_BARRIER_BIT);
         }
     }
     gl::checkErrors("completing radiance bricks");

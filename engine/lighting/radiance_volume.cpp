@@ -4,7 +4,6 @@
 
 namespace vct {
 
-constexpr int kCountSlots = 25;
 
 void allocateRadianceVolume(const Octree& octree, RadianceVolume& v) {
     const std::uint32_t cells = std::max<std::uint32_t>(octree.cellCount(), 1);
@@ -18,7 +17,7 @@ void allocateRadianceVolume(const Octree& octree, RadianceVolume& v) {
     v.touchedList = gl::createBuffer(GLsizeiptr(all) * 4, nullptr, dynamic, "touched lists");
     v.borderFlag = gl::createBuffer(GLsizeiptr(nodes) * 4, nullptr, dynamic, "border flags");
     v.borderList = gl::createBuffer(GLsizeiptr(nodes) * 4, nullptr, dynamic, "border lists");
-    v.listCounts = gl::createBuffer(kCountSlots * 4, nullptr, dynamic, "radiance list counts");
+    v.listCounts = gl::createBuffer(gl::LIST_COUNT_SLOTS * 4, nullptr, dynamic, "radiance list counts");
     v.indirectArgs = gl::createBuffer(3 * 4 * 2 * (kMaxOctreeLevels + 1), nullptr, dynamic, "radiance dispatch args");
     v.partial.clear();
     v.partialDirection.clear();
@@ -52,11 +51,11 @@ std::size_t RadianceVolume::bytes(const Octree& octree) const {
 }
 
 RadianceStatistics readRadianceStatistics(const Octree& octree, const RadianceVolume& v) {
-    std::uint32_t counts[kCountSlots] = {};
+    std::uint32_t counts[gl::LIST_COUNT_SLOTS] = {};
     glGetNamedBufferSubData(v.listCounts.id(), 0, sizeof counts, counts);
     RadianceStatistics s;
     for (int l = 0; l <= octree.levels; ++l) s.touchedPerLevel.push_back(counts[l]);
-    s.photonsMissed = counts[24];
+    s.photonsMissed = counts[gl::MISSED_COUNT_SLOT];
     return s;
 }
 

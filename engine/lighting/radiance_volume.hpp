@@ -6,12 +6,13 @@
 #include <vector>
 
 #include "gl/objects.hpp"
+#include "gl/shader_interface.hpp"
 #include "voxel/brick_pool.hpp"
 #include "voxel/octree.hpp"
 
 namespace vct {
 
-constexpr int kAccumulatorWords = 10;  // ACCUMULATOR_WORDS in shaders/radiance_common.glsl
+constexpr int kAccumulatorWords = gl::RADIANCE_ACCUMULATOR_WORDS;
 
 struct RadianceVolume {
     // Per voxel (cell): 64-bit fixed-point sums of reflected flux (R, G, B: low, high words), the
@@ -27,7 +28,7 @@ struct RadianceVolume {
     // neighbourhood), whose complete samples can change.
     gl::Buffer touchedFlag, touchedList;
     gl::Buffer borderFlag, borderList;
-    gl::Buffer listCounts;    // uints: touched counts [0..11], border counts [12..23], photons missed [24]
+    gl::Buffer listCounts;    // uints: touched counts per level, border counts per level, photons missed
     gl::Buffer indirectArgs;  // dispatch arguments, 3 uints per slot
 
     std::vector<PartialBricks> partial;  // per level 0..L−1

@@ -1,91 +1,78 @@
 #include "pipeline/pass_graph.hpp"
 
-#include "core/error.hpp"
-
 namespace vct {
 
-const char* inputName(Input input) {
-    switch (input) {
-        case Input::Geometry: return "geometry";
-        case Input::Materials: return "materials";
-        case Input::Lights: return "lights";
-        case Input::Camera: return "camera";
-        case Input::OutputSize: return "output size";
-        case Input::VoxelSettings: return "voxel settings";
-        case Input::ShadowSettings: return "shadow settings";
-        case Input::PhotonSettings: return "photon settings";
-        case Input::ConeSettings: return "cone settings";
-        case Input::DisplaySettings: return "display settings";
-        case Input::ViewSettings: return "view settings";
-        case Input::Count: break;
-    }
-    return "?";
+std::array<PassGraph::PassState, kPassCount> PassGraph::freshState() {
+    std::array<PassState, kPassCount> state{};
+    for (PassState& s : state) s.seenResources.fill(kNeverRead);
+    return state;
 }
 
-void PassGraph::addPass(const std::string& name, std::vector<Input> inputs, std::vector<std::string> reads,
-                        std::vector<std::string> writes) {
-    for (const std::string& r : reads)
-        if (!lastWriter_.count(r)) fail("pass graph: '", name, "' reads '", r, "' before any pass writes it (engine bug)");
-    for (const std::string& w : writes) {
-        lastWriter_[w] = name;
-        resourceVersion_.emplace(w, 0);
-    }
-    passes_.push_back({name, std::move(inputs), std::move(reads), std::move(writes), false, {}, {}});
+namespace {
+// The passes whose results `targets` need: walking the table backwards, a pass is needed when it
+// writes something needed, and then what it reads is needed too.
+std::array<bool, kPassCount> passesFor(ResourceSet targets) {
+    std::array<bool, kPassCount> needed{};
+    ResourceSet wanted = targets;
+    const PassTable& table = framePasses();
+    for (std::size_t i = kPassCount; i-- > 0;)
+        if (table[i].writes.intersects(wanted)) {
+            needed[i] = true;
+            wanted |= table[i].reads;
+        }
+    return needed;
 }
+}  // namespace
 
-std::vector<PassRun> PassGraph::plan(const InputVersions& versions,
-                                     const std::function<std::string(const std::string&)>& whyNotNeeded) const {
-    std::map<std::string, std::uint64_t> resources = resourceVersion_;
+std::vector<PassRun> PassGraph::plan(const InputVersions& versions, const RenderSettings& settings,
+                                     ResourceSet targets) const {
+    std::array<std::uint64_t, kResourceCount> resources = resourceVersion_;
+    const std::array<bool, kPassCount> asked = passesFor(targets);
     std::vector<PassRun> runs;
-    for (const Pass& pass : passes_) {
-        PassRun run{pass.name, false, ""};
-        const std::string notNeeded = whyNotNeeded(pass.name);
-        if (!notNeeded.empty()) {
-            run.reason = "not needed: " + notNeeded;
-        } else if (!pass.everRan) {
+    for (const PassDeclaration& pass : framePasses()) {
+        const PassState& state = state_[std::size_t(pass.pass)];
+        PassRun run{pass.pass, pass.name, false, ""};
+        const char* notNeeded = pass.whyNotNeeded(settings);
+        if (!asked[std::size_t(pass.pass)]) {
+            run.reason = "not needed: not asked for";
+        } else if (notNeeded) {
+            run.reason = std::string("not needed: ") + notNeeded;
+        } else if (!state.everRan) {
             run.ran = true;
             run.reason = "first run";
         } else {
-            for (Input input : pass.inputs)
-                if (versions[std::size_t(input)] != pass.seenInputs[std::size_t(input)]) {
+            pass.inputs.forEach([&](Input input) {
+                if (!run.ran && versions[std::size_t(input)] != state.seenInputs[std::size_t(input)]) {
                     run.ran = true;
                     run.reason = std::string(inputName(input)) + " changed";
-                    break;
                 }
-            if (!run.ran)
-                for (const std::string& r : pass.reads) {
-                    const auto seen = pass.seenResources.find(r);
-                    if (seen == pass.seenResources.end() || seen->second != resources.at(r)) {
-                        run.ran = true;
-                        run.reason = "reads " + r + ", rewritten";
-                        break;
-                    }
+            });
+            pass.reads.forEach([&](Resource r) {
+                if (!run.ran && state.seenResources[std::size_t(r)] != resources[std::size_t(r)]) {
+                    run.ran = true;
+                    run.reason = std::string("reads ") + resourceName(r) + ", rewritten";
                 }
+            });
             if (!run.ran) run.reason = "nothing it depends on changed";
         }
-        if (run.ran)
-            for (const std::string& w : pass.writes) ++resources[w];
+        if (run.ran) pass.writes.forEach([&](Resource w) { ++resources[std::size_t(w)]; });
         runs.push_back(run);
     }
     return runs;
 }
 
 void PassGraph::commit(const std::vector<PassRun>& plan, const InputVersions& versions) {
-    for (std::size_t i = 0; i < plan.size() && i < passes_.size(); ++i) {
-        if (!plan[i].ran) continue;
-        Pass& pass = passes_[i];
-        for (const std::string& r : pass.reads) pass.seenResources[r] = resourceVersion_.at(r);
-        for (const std::string& w : pass.writes) ++resourceVersion_[w];
-        pass.seenInputs = versions;
-        pass.everRan = true;
+    for (const PassRun& run : plan) {
+        if (!run.ran) continue;
+        const PassDeclaration& pass = declaration(run.pass);
+        PassState& state = state_[std::size_t(run.pass)];
+        pass.reads.forEach([&](Resource r) { state.seenResources[std::size_t(r)] = resourceVersion_[std::size_t(r)]; });
+        pass.writes.forEach([&](Resource w) { ++resourceVersion_[std::size_t(w)]; });
+        state.seenInputs = versions;
+        state.everRan = true;
     }
 }
 
-void PassGraph::reset() {
-    for (Pass& pass : passes_) {
-        pass.everRan = false;
-        pass.seenResources.clear();
-    }
-}
+void PassGraph::reset() { state_ = freshState(); }
 
 }  // namespace vct

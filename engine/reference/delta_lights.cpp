@@ -49,7 +49,7 @@ glm::dvec3 DeltaLights::reflected(const RayScene& rays, const SurfaceHit& hit, g
             irradiance += light.radiometric * (falloff * cosTheta / d2);
         }
     }
-    return glm::dvec3(albedo) / kPiDouble * irradiance;
+    return glm::dvec3(albedo) / kPi * irradiance;
 }
 
 }  // namespace vct::reference

@@ -47,8 +47,7 @@ double seconds(std::chrono::steady_clock::time_point since) {
 }  // namespace
 
 void validate(const ReferenceSettings& s) {
-    if (s.width < 1 || s.height < 1 || s.width > 16384 || s.height > 16384)
-        fail("image size ", s.width, "x", s.height, " is out of range; --width and --height must be within 1..16384");
+    validateImageSize(s.width, s.height);
     if (s.samplesPerPixel < 1) fail("--spp ", s.samplesPerPixel, " must be at least 1");
     if (s.bounces < 0 || s.bounces > 100000) fail("--bounces ", s.bounces, " is out of range; use 0..100000");
     if (s.threads < 0 || s.threads > 1024) fail("--threads ", s.threads, " is out of range; use 0 (all cores)..1024");

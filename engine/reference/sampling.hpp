@@ -5,10 +5,10 @@
 
 #include <glm/glm.hpp>
 
+#include "core/math_constants.hpp"
+
 namespace vct::reference {
 
-inline constexpr float kPi = 3.14159265358979323846f;
-inline constexpr double kPiDouble = 3.14159265358979323846;
 
 // Orthonormal basis (t, b, n) around unit n without a branch on "which axis is safe"
 // (Duff et al. 2017, "Building an Orthonormal Basis, Revisited").
@@ -30,7 +30,7 @@ struct Frame {
 // and nothing else, which keeps the variance low and the furnace test exact.
 inline glm::vec3 sampleCosineHemisphere(glm::vec3 n, float u1, float u2) {
     const float r = std::sqrt(u1);
-    const float phi = 2.0f * kPi * u2;
+    const float phi = 2.0f * kPiF * u2;
     const float z = std::sqrt(std::max(0.0f, 1.0f - u1));
     return Frame(n).toWorld({r * std::cos(phi), r * std::sin(phi), z});
 }

@@ -4,7 +4,7 @@
 #include <cstring>
 
 #include "core/error.hpp"
-#include "gl/shader.hpp"
+#include "gl/compute.hpp"
 
 namespace vct {
 
@@ -41,31 +41,27 @@ Composite::Composite(int width, int height)
 
 void Composite::render(const GBuffer& gbuffer, GLuint directRadiance, GLuint indirect, const ViewTransform& camera,
                        float depthScale, const DisplaySettings& display, GLuint debugImage, bool toneMapDebugImage) {
-    const GLuint p = program_.id();
-    glUseProgram(p);
-    glBindTextureUnit(0, gbuffer.albedo());
-    glBindTextureUnit(1, gbuffer.normal());
-    glBindTextureUnit(2, gbuffer.position());
-    glBindTextureUnit(3, gbuffer.emissive());
-    glBindTextureUnit(4, directRadiance);
-    glBindTextureUnit(5, debugImage);
-    glBindTextureUnit(6, indirect);
-    gl::setUniform(p, "uHasIndirect", indirect != 0 ? 1 : 0);
-    gl::setUniform(p, "uGiScale", display.giScale);
-    gl::setUniform(p, "uShowDebugImage", debugImage == 0 ? 0 : (toneMapDebugImage ? 2 : 1));
-    glBindImageTexture(0, hdr_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
-    glBindImageTexture(1, ldr_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA8);
-    gl::setUniform(p, "uAov", int(display.aov));
-    // 2^EV in float: beyond ±kMaxExposureEV it is 0 or Inf and the tone-mapped image garbage.
-    if (!std::isfinite(display.exposureEV) || std::abs(display.exposureEV) > kMaxExposureEV)
-        fail("exposure ", display.exposureEV, " EV must be a finite number of stops within ±", kMaxExposureEV);
-    gl::setUniform(p, "uExposure", float(std::exp2(display.exposureEV)));
-    gl::setUniform(p, "uToneCurve", int(display.toneCurve));
-    gl::setUniform(p, "uEye", camera.eye);
-    gl::setUniform(p, "uForward", camera.forward);
-    gl::setUniform(p, "uDepthScale", depthScale);
-    glDispatchCompute(GLuint((width_ + 7) / 8), GLuint((height_ + 7) / 8), 1);
-    glMemoryBarrier(GL_TEXTURE_UPDATE_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT);
+    gl::ComputeCall(program_)
+        .texture(gl::TEXTURE_GBUFFER_ALBEDO, gbuffer.albedo())
+        .texture(gl::TEXTURE_GBUFFER_NORMAL, gbuffer.normal())
+        .texture(gl::TEXTURE_GBUFFER_POSITION, gbuffer.position())
+        .texture(gl::TEXTURE_GBUFFER_EMISSIVE, gbuffer.emissive())
+        .texture(gl::TEXTURE_DIRECT, directRadiance)
+        .texture(gl::TEXTURE_DEBUG_IMAGE, debugImage)
+        .texture(gl::TEXTURE_INDIRECT, indirect)
+        .image(gl::IMAGE_HDR, hdr_.id(), GL_WRITE_ONLY, GL_RGBA32F)
+        .image(gl::IMAGE_LDR, ldr_.id(), GL_WRITE_ONLY, GL_RGBA8)
+        .uniform("uHasIndirect", indirect != 0 ? 1 : 0)
+        .uniform("uGiScale", display.giScale)
+        .uniform("uShowDebugImage", debugImage == 0 ? 0 : (toneMapDebugImage ? 2 : 1))
+        .uniform("uAov", int(display.aov))
+        .uniform("uExposure", float(std::exp2(display.exposureEV)))
+        .uniform("uToneCurve", int(display.toneCurve))
+        .uniform("uEye", camera.eye)
+        .uniform("uForward", camera.forward)
+        .uniform("uDepthScale", depthScale)
+        .dispatchImage(width_, height_,
+                       GL_TEXTURE_UPDATE_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT);
 }
 
 namespace {

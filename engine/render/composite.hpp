@@ -25,6 +25,8 @@ struct DisplaySettings {
     float giScale = 1.0f;  // artistic only; 1 in every accuracy measurement
     ToneCurve toneCurve = ToneCurve::Aces;
     double exposureEV = 0.0;
+
+    bool operator==(const DisplaySettings&) const = default;
 };
 
 class Composite {

@@ -3,7 +3,7 @@
 #include <cmath>
 
 #include "core/error.hpp"
-#include "gl/shader.hpp"
+#include "gl/compute.hpp"
 #include "voxel/brick_pool.hpp"
 
 namespace vct {
@@ -22,15 +22,22 @@ ConeStatistics ConeTrace::statistics() const {
     return {join(0), join(2), join(4)};
 }
 
+void validateConeSettings(const ConeSettings& s) {
+    makeConeSet(s.cones);  // throws for an unknown set
+    if (!(s.apertureScale > 0.0f && s.apertureScale <= 4.0f))
+        fail("--cone-aperture ", s.apertureScale, " is out of range; use a factor in (0, 4]");
+    if (!(s.step >= 0.05f && s.step <= 4.0f))
+        fail("--cone-step ", s.step, " is out of range; use 0.05..4 (fraction of the cone diameter)");
+    if (!(s.offset >= 0.0f && s.offset <= 16.0f))
+        fail("--cone-offset ", s.offset, " is out of range; use 0..16 voxels");
+    if (!(s.lift >= 0.0f && s.lift <= 4.0f))
+        fail("--cone-lift ", s.lift, " is out of range; use 0..4 (normal offset per unit of cone diameter)");
+    if (!(s.maxDistance >= 0.0f) || !std::isfinite(s.maxDistance))
+        fail("cone maximum distance ", s.maxDistance, " must be a finite number ≥ 0 (0: the whole volume)");
+}
+
 void ConeTrace::render(const GBuffer& gbuffer, const Octree& octree, const RadianceVolume& radiance,
                        const ConeSettings& settings) {
-    if (!(settings.apertureScale > 0.0f) || !(settings.step > 0.0f) || !(settings.offset >= 0.0f))
-        fail("cone settings must be positive: --cone-aperture ", settings.apertureScale, ", --cone-step ",
-             settings.step, ", --cone-offset ", settings.offset);
-    if (!(settings.lift >= 0.0f && settings.lift <= 4.0f))
-        fail("--cone-lift ", settings.lift, " is out of range; use 0..4 (normal offset per unit of cone diameter)");
-    if (!(settings.maxDistance >= 0.0f) || !std::isfinite(settings.maxDistance))
-        fail("cone maximum distance ", settings.maxDistance, " must be a finite number ≥ 0 (0: the whole volume)");
     const std::vector<Cone> cones = makeConeSet(settings.cones);
     std::vector<glm::vec3> directions;
     std::vector<float> tangents, weights;
@@ -40,36 +47,35 @@ void ConeTrace::render(const GBuffer& gbuffer, const Octree& octree, const Radia
         tangents.push_back(std::min(std::tan(c.halfAngle) * settings.apertureScale, 5.0f));
         weights.push_back(c.weight);
     }
-    const GLuint p = program_.id();
-    glUseProgram(p);
+    gl::ComputeCall call(program_);
+    const GLuint p = call.program();
     octree.bind(p);
     setBrickPoolUniforms(p, octree);
-    gl::setUniform(p, "uConeCount", int(cones.size()));
     glProgramUniform3fv(p, glGetUniformLocation(p, "uConeDirection"), GLsizei(cones.size()), &directions[0].x);
     glProgramUniform1fv(p, glGetUniformLocation(p, "uConeTanHalfAngle"), GLsizei(cones.size()), tangents.data());
     glProgramUniform1fv(p, glGetUniformLocation(p, "uConeWeight"), GLsizei(cones.size()), weights.data());
-    gl::setUniform(p, "uConeStep", settings.step);
-    gl::setUniform(p, "uConeOffset", settings.offset);
-    gl::setUniform(p, "uConeLift", settings.lift);
     const float diagonal = float(octree.grid.resolution()) * 1.7320508f;
-    gl::setUniform(p, "uMaxDistance", settings.maxDistance > 0.0f ? settings.maxDistance : diagonal);
-    gl::setUniform(p, "uUseBricks", settings.bricks ? 1 : 0);
-    gl::setUniform(p, "uVoxelOrigin", glm::vec3(octree.grid.localMin));
-    gl::setUniform(p, "uVoxelScale", float(1.0 / octree.grid.voxelSize));
-    glBindTextureUnit(0, gbuffer.normal());
-    glBindTextureUnit(1, gbuffer.position());
-    glBindTextureUnit(2, radiance.brickRadiance.id());
-    glBindTextureUnit(4, radiance.brickDirection.id());
-    glBindTextureUnit(5, octree.brickOpacity.id());
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 26, octree.rawOpacity.id());
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 24, radiance.rawDirection.id());
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 12, radiance.rawRadiance.id());
-    glBindImageTexture(0, indirect_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
     const std::uint32_t zero = 0;
     glClearNamedBufferData(counters_.id(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 22, counters_.id());
-    glDispatchCompute(GLuint((width_ + 7) / 8), GLuint((height_ + 7) / 8), 1);
-    glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+    call.uniform("uConeCount", int(cones.size()))
+        .uniform("uConeStep", settings.step)
+        .uniform("uConeOffset", settings.offset)
+        .uniform("uConeLift", settings.lift)
+        .uniform("uMaxDistance", settings.maxDistance > 0.0f ? settings.maxDistance : diagonal)
+        .uniform("uUseBricks", settings.bricks ? 1 : 0)
+        .uniform("uVoxelOrigin", glm::vec3(octree.grid.localMin))
+        .uniform("uVoxelScale", float(1.0 / octree.grid.voxelSize))
+        .texture(gl::TEXTURE_GBUFFER_NORMAL, gbuffer.normal())
+        .texture(gl::TEXTURE_GBUFFER_POSITION, gbuffer.position())
+        .texture(gl::TEXTURE_BRICK_RADIANCE, radiance.brickRadiance.id())
+        .texture(gl::TEXTURE_BRICK_DIRECTION, radiance.brickDirection.id())
+        .texture(gl::TEXTURE_BRICK_OPACITY, octree.brickOpacity.id())
+        .storage(gl::SSBO_RAW_OPACITY, octree.rawOpacity)
+        .storage(gl::SSBO_RAW_DIRECTION, radiance.rawDirection)
+        .storage(gl::SSBO_RAW_VALUE, radiance.rawRadiance)
+        .storage(gl::SSBO_CONE_COUNTERS, counters_)
+        .image(gl::IMAGE_INDIRECT, indirect_.id(), GL_WRITE_ONLY, GL_RGBA32F)
+        .dispatchImage(width_, height_, GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
     gl::checkErrors("tracing cones");
 }
 

@@ -16,7 +16,13 @@ struct ConeSettings {
     float lift = 1.0f;          // extra normal offset per unit of cone diameter (self-illumination)
     float maxDistance = 0.0f;   // voxels; 0 = through the whole volume
     bool bricks = true;         // false: raw node values, no interpolation (`--no-bricks`)
+
+    bool operator==(const ConeSettings&) const = default;
 };
+
+// Throws naming the option for a setting out of its range (an unknown cone set, aperture,
+// step, offset, lift, maximum distance).
+void validateConeSettings(const ConeSettings& settings);
 
 struct ConeStatistics {
     std::uint64_t samples = 0;       // brick samples taken

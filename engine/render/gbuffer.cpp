@@ -1,6 +1,7 @@
 #include "render/gbuffer.hpp"
 
 #include "core/error.hpp"
+#include "gl/raster_state.hpp"
 #include "gl/shader.hpp"
 
 namespace vct {
@@ -30,19 +31,15 @@ GBuffer::GBuffer(int width, int height)
 std::size_t GBuffer::bytes() const { return std::size_t(width_) * height_ * (8 + 8 + 16 + 16 + 4); }
 
 void GBuffer::render(const GpuScene& scene, const ViewTransform& camera) {
-    glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_.id());
-    glViewport(0, 0, width_, height_);
+    gl::beginRasterPass({framebuffer_.id(), width_, height_, true});
     const float zero[4] = {0, 0, 0, 0};
     for (int i = 0; i < 4; ++i) glClearNamedFramebufferfv(framebuffer_.id(), GL_COLOR, i, zero);
     glClearNamedFramebufferfv(framebuffer_.id(), GL_DEPTH, 0, zero);  // reversed depth: far = 0
-    glEnable(GL_DEPTH_TEST);
-    glDepthFunc(GL_GREATER);
-    glDisable(GL_CULL_FACE);  // every surface is two-sided
     glUseProgram(program_.id());
     gl::setUniform(program_.id(), "uViewProjection", camera.viewProjection);
     gl::setUniform(program_.id(), "uEye", camera.eye);
     scene.draw(program_.id());
-    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    gl::endRasterPass();
 }
 
 }  // namespace vct

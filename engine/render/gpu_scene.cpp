@@ -6,6 +6,7 @@
 
 #include "core/error.hpp"
 #include "gl/shader.hpp"
+#include "gl/shader_interface.hpp"
 
 namespace vct {
 
@@ -105,9 +106,8 @@ float GpuScene::maxEmission() const {
     return m;
 }
 
-void GpuScene::draw(GLuint program, GLuint textureUnit) const {
+void GpuScene::draw(GLuint program) const {
     glBindVertexArray(vertexArray_.id());
-    gl::setUniform(program, "uBaseColorTexture", int(textureUnit));
     for (const DrawRange& range : ranges_) {
         const GpuMaterial& m = materials_[range.material];
         gl::setUniform(program, "uMaterialIndex", int(range.material));
@@ -115,7 +115,7 @@ void GpuScene::draw(GLuint program, GLuint textureUnit) const {
         gl::setUniform(program, "uEmissive", m.emissive);
         gl::setUniform(program, "uAlphaCutoff", m.alphaCutoff);
         gl::setUniform(program, "uHasTexture", m.texture >= 0 ? 1 : 0);
-        glBindTextureUnit(textureUnit, m.texture >= 0 ? textures_[std::size_t(m.texture)].id() : 0);
+        glBindTextureUnit(gl::TEXTURE_BASE_COLOR, m.texture >= 0 ? textures_[std::size_t(m.texture)].id() : 0);
         glDrawElements(GL_TRIANGLES, GLsizei(range.indexCount), GL_UNSIGNED_INT,
                        reinterpret_cast<const void*>(std::uintptr_t(range.firstIndex) * sizeof(std::uint32_t)));
     }

@@ -1,9 +1,9 @@
 #pragma once
 // The scene's geometry and materials on the GPU: one interleaved vertex buffer, one index
 // buffer sorted by material, and one mipmapped sRGB texture per base-colour image. Every pass
-// that rasterizes the scene (G-buffer, light-view map, and later voxelization) draws it through
-// draw(), which sets the material uniforms declared in shaders/material.glsl. The same material
-// values also live in a storage buffer (binding 21, one {baseColor, emissive} pair per material)
+// that rasterizes the scene (G-buffer, light-view map, voxelization) draws it through draw(),
+// which sets the material uniforms declared in shaders/material.glsl. The same material values
+// also live in a storage buffer (gl::SSBO_MATERIALS, one {baseColor, emissive} pair per material)
 // for the passes that look materials up by index (svo_leaves), so that changing a material's
 // colour needs no new voxelization.
 #include <cstddef>
@@ -18,9 +18,9 @@ class GpuScene {
 public:
     explicit GpuScene(const Scene& scene);
 
-    // Draws every triangle with `program` bound; sets its material uniforms and binds the
-    // base-colour texture to `textureUnit`.
-    void draw(GLuint program, GLuint textureUnit = 0) const;
+    // Draws every triangle with `program` bound; sets its material uniforms (shaders/
+    // material.glsl) and binds the base-colour texture at gl::TEXTURE_BASE_COLOR.
+    void draw(GLuint program) const;
 
     std::size_t bytes() const { return bytes_; }
 

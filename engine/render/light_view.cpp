@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "core/error.hpp"
+#include "gl/raster_state.hpp"
 #include "gl/shader.hpp"
 #include "render/light_uniforms.hpp"
 
@@ -50,14 +51,10 @@ void LightViewMap::render(const GpuScene& gpuScene, const Scene& scene, const Li
     // lights are not validated before): nothing non-finite or out of float's range is drawn.
     validateLight(light, "light");
     transform_ = lightView(light, scene, resolution_);
-    glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_.id());
-    glViewport(0, 0, resolution_, resolution_);
+    gl::beginRasterPass({framebuffer_.id(), resolution_, resolution_, true});
     const float zero[4] = {0, 0, 0, 0};
     for (int i = 0; i < 3; ++i) glClearNamedFramebufferfv(framebuffer_.id(), GL_COLOR, i, zero);
-    glClearNamedFramebufferfv(framebuffer_.id(), GL_DEPTH, 0, zero);
-    glEnable(GL_DEPTH_TEST);
-    glDepthFunc(GL_GREATER);
-    glDisable(GL_CULL_FACE);
+    glClearNamedFramebufferfv(framebuffer_.id(), GL_DEPTH, 0, zero);  // reversed depth: far = 0
     const GLuint p = program_.id();
     glUseProgram(p);
     gl::setUniform(p, "uViewProjection", transform_.view.viewProjection);
@@ -66,7 +63,7 @@ void LightViewMap::render(const GpuScene& gpuScene, const Scene& scene, const Li
                    float(1.0 / (quantity * std::max({light.color.x, light.color.y, light.color.z}))));
     setLightUniforms(p, light, scene);
     gpuScene.draw(p);
-    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    gl::endRasterPass();
 }
 
 }  // namespace vct

@@ -1,5 +1,5 @@
 #pragma once
-// GPU memory budget (README "Robustness", resource limits). vct can estimate, before allocating
+// GPU memory budget (docs/robustness.md, resource limits). vct can estimate, before allocating
 // anything, what a frame of a scene at given settings will hold on the GPU; with a budget set
 // (`--memory-budget MiB` or $VCT_MEMORY_BUDGET_MIB) a request over it fails early, naming what it
 // needs and the largest setting that fits. Without a budget only the GL limits apply (checked

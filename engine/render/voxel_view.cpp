@@ -3,7 +3,7 @@
 #include <cmath>
 
 #include "core/error.hpp"
-#include "gl/shader.hpp"
+#include "gl/compute.hpp"
 #include "voxel/brick_pool.hpp"
 
 namespace vct {
@@ -28,27 +28,25 @@ void VoxelView::render(const Octree& octree, const Source& source, const Camera&
     const double tanY = std::tan(glm::radians(camera.fovYDeg) * 0.5);
     const double tanX = tanY * double(width_) / double(height_);
 
-    const GLuint p = program_.id();
-    glUseProgram(p);
-    octree.bind(p);
-    setBrickPoolUniforms(p, octree);
-    gl::setUniform(p, "uEyeVoxel", glm::vec3(eye));
-    gl::setUniform(p, "uForward", glm::vec3(forward));
-    gl::setUniform(p, "uRight", glm::vec3(right));
-    gl::setUniform(p, "uUp", glm::vec3(up));
-    gl::setUniform(p, "uTanHalfFov", glm::vec2(tanX, tanY));
-    gl::setUniform(p, "uViewLevel", level);
-    gl::setUniform(p, "uUseBricks", useBricks ? 1 : 0);
-    gl::setUniform(p, "uShowRadiance", source.radiance ? 1 : 0);
-    glBindTextureUnit(0, source.bricks);
-    glBindTextureUnit(1, octree.brickAlbedo.id());
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 7, octree.cellAlbedo.id());
-    if (source.radiance) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 18, source.cells);
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 12, source.raw);
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 20, octree.rawValue.id());
-    glBindImageTexture(0, image_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
-    glDispatchCompute(GLuint((width_ + 7) / 8), GLuint((height_ + 7) / 8), 1);
-    glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+    gl::ComputeCall call(program_);
+    octree.bind(call.program());
+    setBrickPoolUniforms(call.program(), octree);
+    call.uniform("uEyeVoxel", glm::vec3(eye))
+        .uniform("uForward", glm::vec3(forward))
+        .uniform("uRight", glm::vec3(right))
+        .uniform("uUp", glm::vec3(up))
+        .uniform("uTanHalfFov", glm::vec2(tanX, tanY))
+        .uniform("uViewLevel", level)
+        .uniform("uUseBricks", useBricks ? 1 : 0)
+        .uniform("uShowRadiance", source.radiance ? 1 : 0)
+        .texture(gl::TEXTURE_VIEW_BRICKS, source.bricks)
+        .texture(gl::TEXTURE_VIEW_ALBEDO_BRICKS, octree.brickAlbedo.id())
+        .storage(gl::SSBO_CELL_VALUES, octree.cellAlbedo)
+        .storage(gl::SSBO_RAW_VALUE, source.raw)
+        .storage(gl::SSBO_RAW_ALBEDO, octree.rawValue)
+        .image(gl::IMAGE_VOXEL_VIEW, image_.id(), GL_WRITE_ONLY, GL_RGBA32F);
+    if (source.radiance) call.storage(gl::SSBO_CELL_RADIANCE, source.cells);
+    call.dispatchImage(width_, height_, GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
 }
 
 }  // namespace vct

@@ -2,6 +2,7 @@
 // Debug view `--view voxels`: the octree at one level, ray-marched from the camera, unlit albedo
 // composited with opacity, from the filtered bricks or from raw node values (`--no-bricks`).
 #include "gl/objects.hpp"
+#include "lighting/radiance_volume.hpp"
 #include "render/view.hpp"
 #include "voxel/octree.hpp"
 
@@ -18,6 +19,9 @@ public:
     };
     static Source albedo(const Octree& octree) {
         return {octree.brickAlbedo.id(), octree.cellAlbedo.id(), octree.rawValue.id(), false};
+    }
+    static Source radiance(const RadianceVolume& volume) {
+        return {volume.brickRadiance.id(), volume.cellRadiance.id(), volume.rawRadiance.id(), true};
     }
 
     VoxelView(int width, int height);

@@ -13,6 +13,8 @@ struct Camera {
     glm::dvec3 target{0.0};
     glm::dvec3 up{0.0, 1.0, 0.0};
     double fovYDeg = 45.0;            // vertical field of view
+
+    bool operator==(const Camera&) const = default;
 };
 
 // Throws vct::Error when eye/target/up/fov are non-finite, eye == target, up ∥ view direction

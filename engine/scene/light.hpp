@@ -25,6 +25,8 @@ struct Light {
     double intensity = 1.0;               // spot: W/sr
     double innerAngleDeg = 30.0;          // spot: full intensity inside this half-angle
     double outerAngleDeg = 45.0;          // spot: zero outside this half-angle
+
+    bool operator==(const Light&) const = default;
 };
 
 // Angular falloff of a spot light. With c = cos α, ci = cos(inner), co = cos(outer):

@@ -100,8 +100,8 @@ InputScript InputScript::parse(const std::string& text, const std::string& sourc
             expectWords(w, 3, "resize WIDTH HEIGHT");
             pending.resizeWidth = int(count(w[1], "WIDTH"));
             pending.resizeHeight = int(count(w[2], "HEIGHT"));
-            if (pending.resizeWidth > 16384 || pending.resizeHeight > 16384)
-                fail(where(), "the window size must be within 1..16384");
+            if (pending.resizeWidth > kMaxImageSide || pending.resizeHeight > kMaxImageSide)
+                fail(where(), "the window size must be within 1..", kMaxImageSide);
         } else if (command == "screenshot") {
             // The rest of the line is the path, so that it may contain spaces.
             const auto start = line.find_first_not_of(" \t", line.find("screenshot") + 10);

@@ -326,10 +326,7 @@ private:
 void checkViewerOptions(const ViewerOptions& options) {
     if (!(options.renderScale >= 0.1f && options.renderScale <= 1.0f))
         fail("--render-scale ", options.renderScale, " is out of range; use 0.1..1");
-    if (options.windowWidth < 1 || options.windowHeight < 1 || options.windowWidth > 16384 ||
-        options.windowHeight > 16384)
-        fail("window size ", options.windowWidth, "x", options.windowHeight,
-             " is out of range; --width and --height must be within 1..16384");
+    validateImageSize(options.windowWidth, options.windowHeight, "window size");
     auto set = [](const char* name) {
         const char* value = std::getenv(name);
         return value && *value;

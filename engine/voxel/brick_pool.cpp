@@ -5,7 +5,6 @@
 
 #include "core/error.hpp"
 #include "gl/compute.hpp"
-#include "gl/shader.hpp"
 
 namespace vct {
 
@@ -58,22 +57,21 @@ void setBrickPoolUniforms(GLuint program, const Octree& octree) {
 BrickCompletion::BrickCompletion(const std::vector<std::string>& defines)
     : program_(gl::buildProgram({{GL_COMPUTE_SHADER, "bricks_complete.comp"}}, defines)) {}
 
-void BrickCompletion::prepare(const Octree& octree, const PartialBricks& partial, GLuint pool) {
-    const GLuint p = program_.id();
-    glUseProgram(p);
-    octree.bind(p);
-    setBrickPoolUniforms(p, octree);
-    gl::setUniform(p, "uLevel", partial.level);
-    glBindImageTexture(0, partial.texture.id(), 0, GL_FALSE, 0, GL_READ_ONLY, GL_RGBA32F);
+gl::ComputeCall BrickCompletion::prepare(const Octree& octree, const PartialBricks& partial, GLuint pool) {
+    gl::ComputeCall call(program_);
+    octree.bind(call.program());
+    setBrickPoolUniforms(call.program(), octree);
     GLint format = GL_RGBA16F;  // the albedo pool; the radiance pool is RGBA32F (POOL_RGBA32F variant)
     glGetTextureLevelParameteriv(pool, 0, GL_TEXTURE_INTERNAL_FORMAT, &format);
-    glBindImageTexture(1, pool, 0, GL_TRUE, 0, GL_WRITE_ONLY, GLenum(format));
+    call.uniform("uLevel", partial.level)
+        .image(gl::IMAGE_PARTIAL_BRICKS, partial.texture.id(), GL_READ_ONLY, GL_RGBA32F)
+        .image(gl::IMAGE_BRICK_POOL, pool, GL_WRITE_ONLY, GLenum(format), true);
+    return call;
 }
 
 void BrickCompletion::run(const Octree& octree, const PartialBricks& partial, GLuint pool) {
-    prepare(octree, partial, pool);
-    gl::dispatch1D(octree.levelCount[partial.level], 64);
-    glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
+    prepare(octree, partial, pool)
+        .dispatch1D(octree.levelCount[partial.level], 64, GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
 }
 
 }  // namespace vct

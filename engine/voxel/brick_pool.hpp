@@ -1,6 +1,7 @@
 #pragma once
 // The 3D-texture brick pool and the step both brick passes end with: turning one level's partial
 // bricks into complete samples in the pool (brick_layout.hpp, shaders/bricks_complete.comp).
+#include "gl/compute.hpp"
 #include "voxel/octree.hpp"
 
 namespace vct {
@@ -30,9 +31,8 @@ public:
     explicit BrickCompletion(const std::vector<std::string>& defines = {});
     // Completes every node of the partial's level into `pool`.
     void run(const Octree& octree, const PartialBricks& partial, GLuint pool);
-    GLuint program() const { return program_.id(); }
     // Binds everything but the dispatch, for callers that dispatch over a list themselves.
-    void prepare(const Octree& octree, const PartialBricks& partial, GLuint pool);
+    gl::ComputeCall prepare(const Octree& octree, const PartialBricks& partial, GLuint pool);
 
 private:
     gl::Program program_;

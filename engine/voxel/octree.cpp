@@ -1,6 +1,7 @@
 #include "voxel/octree.hpp"
 
 #include "gl/shader.hpp"
+#include "gl/shader_interface.hpp"
 
 namespace vct {
 
@@ -15,11 +16,11 @@ std::size_t Octree::denseTextureBytes() const {
 }
 
 void Octree::bind(GLuint program) const {
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, child.id());
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 2, mask.id());
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 3, coord.id());
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 4, parent.id());
-    if (neighbours) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 5, neighbours.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, gl::SSBO_NODE_CHILD, child.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, gl::SSBO_NODE_MASK, mask.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, gl::SSBO_NODE_COORD, coord.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, gl::SSBO_NODE_PARENT, parent.id());
+    if (neighbours) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, gl::SSBO_NODE_NEIGHBOUR, neighbours.id());
     gl::setUniform(program, "uLevels", levels);
     glProgramUniform1uiv(program, glGetUniformLocation(program, "uLevelStart"), kMaxOctreeLevels + 1, levelStart.data());
     glProgramUniform1uiv(program, glGetUniformLocation(program, "uLevelCount"), kMaxOctreeLevels + 1, levelCount.data());

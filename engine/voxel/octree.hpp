@@ -8,11 +8,12 @@
 #include <vector>
 
 #include "gl/objects.hpp"
+#include "gl/shader_interface.hpp"
 #include "voxel/voxel_grid.hpp"
 
 namespace vct {
 
-constexpr int kMaxOctreeLevels = 11;  // node levels 0..L−1 plus the cell level L, L ≤ 10
+constexpr int kMaxOctreeLevels = gl::MAX_OCTREE_LEVELS;
 
 // Voxel fragments: one RGBA32UI texel each (cell, texture colour RGBA8, normal oct16,
 // material index << 16 | area as half float) in a buffer texture, so the list may exceed the

@@ -4,7 +4,6 @@
 
 #include "core/error.hpp"
 #include "gl/compute.hpp"
-#include "gl/shader.hpp"
 
 namespace vct {
 namespace {
@@ -64,55 +63,42 @@ void SvoBuild::run(const FragmentList& fragments, const VoxelGrid& grid, Octree&
     fragmentNodeTexture_ = gl::createTexture(GL_TEXTURE_BUFFER, "fragment node");
     glTextureBuffer(fragmentNodeTexture_.id(), GL_R32UI, fragmentNode_.id());
 
-    auto bindFragments = [&](GLuint program, int level) {
-        octree.bind(program);
-        gl::setUniform(program, "uFragmentCount", fragments.count);
-        gl::setUniform(program, "uLevel", level);
-        glBindImageTexture(0, fragments.dataTexture.id(), 0, GL_FALSE, 0, GL_READ_ONLY, GL_RGBA32UI);
-        glBindImageTexture(1, fragmentNodeTexture_.id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_R32UI);
-    };
     const GLbitfield barrier = GL_SHADER_STORAGE_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT;
+    // One invocation per fragment: flag marks child slots, descend moves the fragment down.
+    auto overFragments = [&](const gl::Program& program, int level) {
+        gl::ComputeCall call(program);
+        octree.bind(call.program());
+        call.uniform("uFragmentCount", fragments.count)
+            .uniform("uLevel", level)
+            .image(gl::IMAGE_FRAGMENTS, fragments.dataTexture.id(), GL_READ_ONLY, GL_RGBA32UI)
+            .image(gl::IMAGE_FRAGMENT_NODE, fragmentNodeTexture_.id(), GL_READ_WRITE, GL_R32UI)
+            .dispatch1D(fragments.count, 64, barrier);
+    };
+    // One invocation per node of the level.
+    auto overNodes = [&](const gl::Program& program, int level, int phase) {
+        gl::ComputeCall call(program);
+        octree.bind(call.program());
+        call.uniform("uLevel", level)
+            .uniform("uPhase", phase)
+            .storage(gl::SSBO_CHILD_COUNTS, counts_)
+            .dispatch1D(octree.levelCount[level], 64, barrier);
+    };
 
     for (int level = 0; level < grid.levels; ++level) {
         const std::uint32_t count = octree.levelCount[level];
-        glUseProgram(flag_.id());
-        bindFragments(flag_.id(), level);
-        gl::dispatch1D(fragments.count, 64);
-        glMemoryBarrier(barrier);
-
+        overFragments(flag_, level);
         if (count > countsCapacity_) {
             countsCapacity_ = std::max(count, countsCapacity_ * 2);
             counts_ = gl::createBuffer(GLsizeiptr(countsCapacity_) * 4, nullptr, kStorage, "octree child counts");
         }
-        glUseProgram(alloc_.id());
-        octree.bind(alloc_.id());
-        gl::setUniform(alloc_.id(), "uLevel", level);
-        gl::setUniform(alloc_.id(), "uPhase", 0);
-        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 6, counts_.id());
-        gl::dispatch1D(count, 64);
-        glMemoryBarrier(barrier);
+        overNodes(alloc_, level, 0);
         const std::uint32_t children = prefixSum_.scan(counts_.id(), count);
         octree.levelStart[level + 1] = octree.levelStart[level] + count;
         octree.levelCount[level + 1] = children;
         ensureCapacity(octree, octree.levelStart[level + 1] + children);
-
-        glUseProgram(alloc_.id());
-        octree.bind(alloc_.id());
-        gl::setUniform(alloc_.id(), "uPhase", 1);
-        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 6, counts_.id());
-        gl::dispatch1D(count, 64);
-        glMemoryBarrier(barrier);
-
-        glUseProgram(init_.id());
-        octree.bind(init_.id());
-        gl::setUniform(init_.id(), "uLevel", level);
-        gl::dispatch1D(count, 64);
-        glMemoryBarrier(barrier);
-
-        glUseProgram(descend_.id());
-        bindFragments(descend_.id(), level);
-        gl::dispatch1D(fragments.count, 64);
-        glMemoryBarrier(barrier);
+        overNodes(alloc_, level, 1);
+        overNodes(init_, level, 0);
+        overFragments(descend_, level);
     }
     octree.nodeCount = octree.levelStart[grid.levels];
     octree.totalCount = octree.nodeCount + octree.levelCount[grid.levels];

@@ -7,33 +7,6 @@
 
 namespace vct {
 
-void SvoBuilder::build(const GpuScene& gpuScene, const Scene& scene, int levels, gl::GpuTimer& timer) {
-    {
-        gl::GpuTimer::Scope pass(timer, "voxelize");
-        voxelize(gpuScene, scene, levels);
-    }
-    {
-        gl::GpuTimer::Scope pass(timer, "svo_build");
-        buildStructure();
-    }
-    {
-        gl::GpuTimer::Scope pass(timer, "svo_leaves");
-        leaves(gpuScene);
-    }
-    {
-        gl::GpuTimer::Scope pass(timer, "svo_neighbours");
-        neighbours();
-    }
-    {
-        gl::GpuTimer::Scope pass(timer, "bricks");
-        bricks();
-    }
-    {
-        gl::GpuTimer::Scope pass(timer, "bricks_mip");
-        bricksMip();
-    }
-}
-
 void SvoBuilder::voxelize(const GpuScene& gpuScene, const Scene& scene, int levels) {
     grid_ = makeVoxelGrid(scene, levels);
     voxelizer_.run(gpuScene, scene, grid_, fragments_);

@@ -1,10 +1,9 @@
 #pragma once
-// Builds the sparse voxel octree of a scene, pass by pass (DESIGN §4 passes 1–6), each timed:
-// voxelize → svo_build → svo_leaves → svo_neighbours → bricks → bricks_mip.
+// The sparse voxel octree of a scene and the objects of the six passes that build it (the pass
+// table, engine/pipeline/frame_passes.cpp, runs them one by one and may re-run only some).
 #include <string>
 #include <vector>
 
-#include "gl/gpu_timer.hpp"
 #include "render/gpu_scene.hpp"
 #include "voxel/bricks.hpp"
 #include "voxel/bricks_mip.hpp"
@@ -27,10 +26,7 @@ struct VoxelMemoryReport {
 class SvoBuilder {
 public:
     SvoBuilder() = default;
-    // All six passes in order, each timed.
-    void build(const GpuScene& gpuScene, const Scene& scene, int levels, gl::GpuTimer& timer);
 
-    // The passes one by one (for the pass graph, which may re-run only some of them).
     void voxelize(const GpuScene& gpuScene, const Scene& scene, int levels);
     void buildStructure();
     void leaves(const GpuScene& gpuScene);

@@ -2,14 +2,13 @@
 
 #include "core/error.hpp"
 #include "gl/compute.hpp"
-#include "gl/shader.hpp"
 
 namespace vct {
 namespace {
-constexpr std::uint32_t kAccumulatorFields = 16;  // ACC_FIELDS in the shaders
+constexpr std::uint32_t kAccumulatorFields = gl::CELL_ACCUMULATOR_FIELDS;
 // Area projected along x, y, z as 64-bit sums, in a buffer of its own so that the octree's
 // largest cell count stays what the main accumulators' buffer-texture limit allows.
-constexpr std::uint32_t kProjectedFields = 6;
+constexpr std::uint32_t kProjectedFields = gl::PROJECTED_AREA_FIELDS;
 }
 
 SvoLeaves::SvoLeaves()
@@ -42,19 +41,17 @@ LeafStatistics SvoLeaves::run(const FragmentList& fragments, GLuint fragmentNode
     const float emissiveScale = maxEmission > 0.0f ? 16777216.0f / maxEmission : 0.0f;
     const GLbitfield barrier = GL_SHADER_STORAGE_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT;
 
-    GLuint p = accumulate_.id();
-    glUseProgram(p);
-    octree.bind(p);
-    gl::setUniform(p, "uFragmentCount", fragments.count);
-    gl::setUniform(p, "uHasEmissive", emissive ? 1 : 0);
-    gl::setUniform(p, "uEmissiveScale", emissiveScale);
-    glBindImageTexture(0, fragments.dataTexture.id(), 0, GL_FALSE, 0, GL_READ_ONLY, GL_RGBA32UI);
-    glBindImageTexture(1, fragmentNodeTexture, 0, GL_FALSE, 0, GL_READ_ONLY, GL_R32UI);
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 21, gpuScene.materialBuffer());
-    glBindImageTexture(3, accumulatorTexture.id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_R32UI);
-    glBindImageTexture(4, projectedTexture.id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_R32UI);
-    gl::dispatch1D(fragments.count, 64);
-    glMemoryBarrier(barrier);
+    gl::ComputeCall accumulate(accumulate_);
+    octree.bind(accumulate.program());
+    accumulate.uniform("uFragmentCount", fragments.count)
+        .uniform("uHasEmissive", emissive ? 1 : 0)
+        .uniform("uEmissiveScale", emissiveScale)
+        .image(gl::IMAGE_FRAGMENTS, fragments.dataTexture.id(), GL_READ_ONLY, GL_RGBA32UI)
+        .image(gl::IMAGE_FRAGMENT_NODE, fragmentNodeTexture, GL_READ_ONLY, GL_R32UI)
+        .storage(gl::SSBO_MATERIALS, gpuScene.materialBuffer())
+        .image(gl::IMAGE_CELL_ACCUMULATORS, accumulatorTexture.id(), GL_READ_WRITE, GL_R32UI)
+        .image(gl::IMAGE_PROJECTED_AREA, projectedTexture.id(), GL_READ_WRITE, GL_R32UI)
+        .dispatch1D(fragments.count, 64, barrier);
 
     const GLsizeiptr bytes = GLsizeiptr(std::max<std::uint32_t>(cells, 1)) * 4;
     octree.cellAlbedo = gl::createBuffer(bytes, nullptr, 0, "cell albedo");
@@ -68,22 +65,20 @@ LeafStatistics SvoLeaves::run(const FragmentList& fragments, GLuint fragmentNode
     const std::uint32_t zeros[2] = {0, 0};
     glNamedBufferSubData(status.id(), 0, 8, zeros);
 
-    p = normalize_.id();
-    glUseProgram(p);
-    octree.bind(p);
-    gl::setUniform(p, "uHasEmissive", emissive ? 1 : 0);
-    gl::setUniform(p, "uEmissiveScale", emissiveScale);
-    glBindImageTexture(3, accumulatorTexture.id(), 0, GL_FALSE, 0, GL_READ_ONLY, GL_R32UI);
-    glBindImageTexture(4, projectedTexture.id(), 0, GL_FALSE, 0, GL_READ_ONLY, GL_R32UI);
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 6, status.id());
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 7, octree.cellAlbedo.id());
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 8, octree.cellNormal.id());
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 9, octree.cellArea.id());
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 10, octree.cellFragments.id());
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 25, octree.cellOpacity.id());
-    if (emissive) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 11, octree.cellEmissive.id());
-    gl::dispatch1D(cells, 64);
-    glMemoryBarrier(barrier | GL_BUFFER_UPDATE_BARRIER_BIT);
+    gl::ComputeCall normalize(normalize_);
+    octree.bind(normalize.program());
+    normalize.uniform("uHasEmissive", emissive ? 1 : 0)
+        .uniform("uEmissiveScale", emissiveScale)
+        .image(gl::IMAGE_CELL_ACCUMULATORS, accumulatorTexture.id(), GL_READ_ONLY, GL_R32UI)
+        .image(gl::IMAGE_PROJECTED_AREA, projectedTexture.id(), GL_READ_ONLY, GL_R32UI)
+        .storage(gl::SSBO_LEAF_STATUS, status)
+        .storage(gl::SSBO_CELL_VALUES, octree.cellAlbedo)
+        .storage(gl::SSBO_CELL_NORMAL, octree.cellNormal)
+        .storage(gl::SSBO_CELL_AREA, octree.cellArea)
+        .storage(gl::SSBO_CELL_FRAGMENTS, octree.cellFragments)
+        .storage(gl::SSBO_CELL_OPACITY, octree.cellOpacity);
+    if (emissive) normalize.storage(gl::SSBO_CELL_EMISSIVE, octree.cellEmissive);
+    normalize.dispatch1D(cells, 64, barrier | GL_BUFFER_UPDATE_BARRIER_BIT);
 
     std::uint32_t result[2] = {0, 0};
     glGetNamedBufferSubData(status.id(), 0, 8, result);

@@ -5,7 +5,9 @@
 
 #include "core/error.hpp"
 #include "core/log.hpp"
+#include "gl/raster_state.hpp"
 #include "gl/shader.hpp"
+#include "gl/shader_interface.hpp"
 
 namespace vct {
 
@@ -55,20 +57,18 @@ void Voxelizer::run(const GpuScene& gpuScene, const Scene& scene, const VoxelGri
     for (;;) {
         const std::uint32_t zero = 0;
         glNamedBufferSubData(list.counter.id(), 0, 4, &zero);
-        glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_.id());
-        glViewport(0, 0, n, n);
-        glDisable(GL_DEPTH_TEST);
-        glDisable(GL_CULL_FACE);
+        // No attachments: the viewport is the voxel grid's face; fragments append to the list.
+        gl::beginRasterPass({framebuffer_.id(), n, n, false});
         glUseProgram(p);
         gl::setUniform(p, "uVoxelOrigin", glm::vec3(grid.localMin));
         gl::setUniform(p, "uVoxelScale", float(1.0 / grid.voxelSize));
         gl::setUniform(p, "uViewportSize", float(n));
         gl::setUniform(p, "uResolution", n);
         gl::setUniform(p, "uCapacity", list.capacity);
-        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, list.counter.id());
-        glBindImageTexture(0, list.dataTexture.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32UI);
+        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, gl::SSBO_FRAGMENT_COUNTER, list.counter.id());
+        glBindImageTexture(gl::IMAGE_FRAGMENTS, list.dataTexture.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32UI);
         gpuScene.draw(p);
-        glBindFramebuffer(GL_FRAMEBUFFER, 0);
+        gl::endRasterPass();
         glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT |
                         GL_BUFFER_UPDATE_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
         std::uint32_t count = 0;

@@ -1,6 +1,6 @@
-// libFuzzer target for the scene loader (README "Robustness", bad files): every input must end in
+// libFuzzer target for the scene loader (docs/robustness.md, bad files): every input must end in
 // a loaded, sane Scene or a vct::Error — never a crash, a sanitizer report, another exception or
-// a Scene with non-finite data. Build and run: README "Fuzzing the loader".
+// a Scene with non-finite data. Build and run: docs/robustness.md "Fuzzing the loader".
 //
 // Input: the first byte picks the format (0: glTF, 1: GLB, 2: OBJ, 3: an image decoded from
 // memory); the rest is the file. For OBJ, bytes after a "\n#MTL\n" marker become model.mtl next to

@@ -1,0 +1,236 @@
+#include "pipeline/frame_passes.hpp"
+
+#include "core/error.hpp"
+#include "pipeline/frame_resources.hpp"
+
+namespace vct {
+
+const char* inputName(Input input) {
+    switch (input) {
+        case Input::Geometry: return "geometry";
+        case Input::Materials: return "materials";
+        case Input::Lights: return "lights";
+        case Input::Camera: return "camera";
+        case Input::OutputSize: return "output size";
+        case Input::VoxelSettings: return "voxel settings";
+        case Input::ShadowSettings: return "shadow settings";
+        case Input::PhotonSettings: return "photon settings";
+        case Input::ConeSettings: return "cone settings";
+        case Input::DisplaySettings: return "display settings";
+        case Input::ViewSettings: return "view settings";
+        case Input::Count: break;
+    }
+    return "?";
+}
+
+const char* resourceName(Resource resource) {
+    switch (resource) {
+        case Resource::Fragments: return "fragments";
+        case Resource::Octree: return "octree";
+        case Resource::CellValues: return "cell values";
+        case Resource::Neighbours: return "neighbours";
+        case Resource::LeafBricks: return "leaf bricks";
+        case Resource::GeometryBricks: return "geometry bricks";
+        case Resource::LightViewMaps: return "light-view maps";
+        case Resource::CellRadiance: return "cell radiance";
+        case Resource::RadiancePartials: return "radiance partials";
+        case Resource::RadianceBricks: return "radiance bricks";
+        case Resource::GBuffer: return "gbuffer";
+        case Resource::DirectRadiance: return "direct radiance";
+        case Resource::IndirectIrradiance: return "indirect irradiance";
+        case Resource::DebugImage: return "debug image";
+        case Resource::Output: return "output";
+        case Resource::Count: break;
+    }
+    return "?";
+}
+
+const char* stageName(Stage stage) {
+    switch (stage) {
+        case Stage::Octree: return "octree";
+        case Stage::Light: return "light";
+        case Stage::Radiance: return "radiance";
+        case Stage::Camera: return "camera";
+        case Stage::Output: return "output";
+        case Stage::Count: break;
+    }
+    return "?";
+}
+
+namespace {
+
+// Why a frame with these settings does not need a pass (nullptr: it does).
+const char* unlessOctree(const RenderSettings& s) { return needsOctree(s) ? nullptr : "GI off and no voxel view"; }
+const char* unlessLightViews(const RenderSettings& s) {
+    return s.view == ViewMode::Lit || needsRadiance(s) ? nullptr : "the voxel view shows no light";
+}
+const char* unlessRadiance(const RenderSettings& s) {
+    if (needsRadiance(s)) return nullptr;
+    return s.view == ViewMode::Lit ? "GI off" : "the voxel view shows albedo";
+}
+const char* unlessLitView(const RenderSettings& s) { return s.view == ViewMode::Lit ? nullptr : "debug view"; }
+const char* unlessConeTrace(const RenderSettings& s) {
+    if (s.view != ViewMode::Lit) return "debug view";
+    return s.gi ? nullptr : "GI off";
+}
+const char* unlessVoxelView(const RenderSettings& s) { return s.view == ViewMode::Lit ? "lit view" : nullptr; }
+const char* always(const RenderSettings&) { return nullptr; }
+
+void renderLightViews(FrameResources& f) {
+    const LightViewCache::Key key{f.version(Input::Geometry), f.version(Input::Materials),
+                                  f.settings.lightViewResolution};
+    f.statistics.lightViewsRendered = f.lightViews.update(*f.gpuScene, *f.scene, f.lights, key);
+    f.statistics.lightViewsTotal = std::uint32_t(f.lights.size());
+}
+
+void injectPhotons(FrameResources& f) {
+    const Octree& octree = f.svo->octree();
+    if (!f.radiance) {
+        f.radiance = std::make_unique<RadianceVolume>();
+        allocateRadianceVolume(octree, *f.radiance);
+    }
+    if (!f.injection) f.injection = std::make_unique<PhotonInjection>();
+    f.injection->run(octree, *f.radiance, *f.scene, f.lights, f.lightViews.maps(), f.settings.photons);
+}
+
+void completeRadianceBricks(FrameResources& f) {
+    const Octree& octree = f.svo->octree();
+    f.radianceFilter->border(octree, *f.radiance);
+    const RadianceStatistics r = readRadianceStatistics(octree, *f.radiance);
+    f.statistics.touchedNodesPerLevel = r.touchedPerLevel;
+    f.statistics.photonsMissed = r.photonsMissed;
+    f.statistics.nodesPerLevel.assign(octree.levelCount.begin(), octree.levelCount.begin() + octree.levels + 1);
+}
+
+void traceCones(FrameResources& f) {
+    if (!f.coneTrace) f.coneTrace = std::make_unique<ConeTrace>(f.settings.width, f.settings.height);
+    ConeSettings cones = f.settings.cones;
+    cones.bricks = f.settings.bricks;
+    f.coneTrace->render(*f.gbuffer, f.svo->octree(), *f.radiance, cones);
+    f.statistics.cones = f.coneTrace->statistics();
+}
+
+void renderVoxelView(FrameResources& f, const FrameView& v) {
+    if (!f.voxelView) f.voxelView = std::make_unique<VoxelView>(f.settings.width, f.settings.height);
+    const int level = f.settings.voxelViewLevel ? f.settings.voxelViewLevel : f.settings.voxelLevels;
+    const VoxelView::Source source = f.settings.view == ViewMode::Radiance
+                                         ? VoxelView::radiance(*f.radiance)
+                                         : VoxelView::albedo(f.svo->octree());
+    f.voxelView->render(f.svo->octree(), source, *v.camera, *f.scene, level, f.settings.bricks);
+}
+
+void composite(FrameResources& f, const FrameView& v) {
+    if (f.settings.view != ViewMode::Lit) {
+        f.composite->render(*f.gbuffer, f.direct->radiance(), 0, v.transform, 1.0f, f.settings.display,
+                            f.voxelView->image(), f.settings.view == ViewMode::Radiance);
+        return;
+    }
+    const GLuint indirect = f.settings.gi && f.coneTrace ? f.coneTrace->indirect() : 0;
+    const float depthScale = float(glm::length(f.scene->worldBounds.size()));
+    f.composite->render(*f.gbuffer, f.direct->radiance(), indirect, v.transform, depthScale, f.settings.display);
+}
+
+using I = Input;
+using R = Resource;
+
+// clang-format off
+const PassTable kFramePasses = {{
+    {Pass::Voxelize, "voxelize", Stage::Octree,
+     {I::Geometry, I::VoxelSettings}, {}, {R::Fragments}, unlessOctree,
+     "voxelize.vert, voxelize.geom, voxelize.frag",
+     [](FrameResources& f, const FrameView&) {
+         if (!f.svo) f.svo = std::make_unique<SvoBuilder>();
+         f.svo->voxelize(*f.gpuScene, *f.scene, f.settings.voxelLevels);
+     }},
+    {Pass::SvoBuild, "svo_build", Stage::Octree,
+     {}, {R::Fragments}, {R::Octree}, unlessOctree,
+     "svo_flag.comp, svo_alloc.comp, prefix_sum.comp, svo_init.comp, svo_descend.comp",
+     [](FrameResources& f, const FrameView&) {
+         f.svo->buildStructure();
+         f.radiance.reset();  // sized for the previous octree
+     }},
+    {Pass::SvoLeaves, "svo_leaves", Stage::Octree,
+     {I::Materials}, {R::Fragments, R::Octree}, {R::CellValues}, unlessOctree,
+     "svo_leaves_accumulate.comp, svo_leaves_normalize.comp",
+     [](FrameResources& f, const FrameView&) { f.svo->leaves(*f.gpuScene); }},
+    {Pass::SvoNeighbours, "svo_neighbours", Stage::Octree,
+     {}, {R::Octree}, {R::Neighbours}, unlessOctree,
+     "svo_neighbours.comp",
+     [](FrameResources& f, const FrameView&) { f.svo->neighbours(); }},
+    {Pass::Bricks, "bricks", Stage::Octree,
+     {}, {R::CellValues, R::Neighbours}, {R::LeafBricks}, unlessOctree,
+     "bricks_leaf.comp, bricks_complete.comp",
+     [](FrameResources& f, const FrameView&) { f.svo->bricks(); }},
+    {Pass::BricksMip, "bricks_mip", Stage::Octree,
+     {}, {R::LeafBricks}, {R::GeometryBricks}, unlessOctree,
+     "bricks_mip.comp, bricks_complete.comp",
+     [](FrameResources& f, const FrameView&) { f.svo->bricksMip(); }},
+    {Pass::LightView, "light_view", Stage::Light,
+     {I::Geometry, I::Materials, I::Lights, I::ShadowSettings}, {}, {R::LightViewMaps}, unlessLightViews,
+     "scene.vert, light_view.frag",
+     [](FrameResources& f, const FrameView&) { renderLightViews(f); }},
+    {Pass::Inject, "inject", Stage::Radiance,
+     {I::PhotonSettings}, {R::LightViewMaps, R::CellValues}, {R::CellRadiance}, unlessRadiance,
+     "inject.comp, inject_emissive.comp, radiance_normalize.comp",
+     [](FrameResources& f, const FrameView&) { injectPhotons(f); }},
+    {Pass::RadianceMip, "radiance_mip", Stage::Radiance,
+     {}, {R::CellRadiance}, {R::RadiancePartials}, unlessRadiance,
+     "touch_parents.comp, bricks_leaf.comp, bricks_mip.comp",
+     [](FrameResources& f, const FrameView&) {
+         if (!f.radianceFilter) f.radianceFilter = std::make_unique<RadianceFilter>();
+         f.radianceFilter->mip(f.svo->octree(), *f.radiance);
+     }},
+    {Pass::RadianceBorder, "radiance_border", Stage::Radiance,
+     {}, {R::RadiancePartials, R::Neighbours}, {R::RadianceBricks}, unlessRadiance,
+     "touch_border.comp, bricks_complete.comp",
+     [](FrameResources& f, const FrameView&) { completeRadianceBricks(f); }},
+    {Pass::GBuffer, "gbuffer", Stage::Camera,
+     {I::Geometry, I::Materials, I::Camera, I::OutputSize}, {}, {R::GBuffer}, unlessLitView,
+     "scene.vert, gbuffer.frag",
+     [](FrameResources& f, const FrameView& v) { f.gbuffer->render(*f.gpuScene, v.transform); }},
+    {Pass::DirectLighting, "direct_lighting", Stage::Camera,
+     {I::Lights, I::ShadowSettings}, {R::GBuffer, R::LightViewMaps}, {R::DirectRadiance}, unlessLitView,
+     "direct_lighting.comp",
+     [](FrameResources& f, const FrameView&) {
+         f.direct->render(*f.gbuffer, *f.scene, f.lights, f.lightViews.maps(), f.settings.pcfRadius);
+     }},
+    {Pass::ConeTrace, "cone_trace", Stage::Camera,
+     {I::ConeSettings}, {R::GBuffer, R::RadianceBricks, R::GeometryBricks}, {R::IndirectIrradiance}, unlessConeTrace,
+     "cone_trace.comp",
+     [](FrameResources& f, const FrameView&) { traceCones(f); }},
+    {Pass::VoxelView, "voxel_view", Stage::Camera,
+     {I::Camera, I::OutputSize, I::ViewSettings}, {R::GeometryBricks, R::RadianceBricks}, {R::DebugImage},
+     unlessVoxelView,
+     "voxel_view.comp",
+     renderVoxelView},
+    {Pass::Composite, "composite", Stage::Output,
+     {I::DisplaySettings, I::ViewSettings, I::OutputSize},
+     {R::GBuffer, R::DirectRadiance, R::IndirectIrradiance, R::DebugImage}, {R::Output}, always,
+     "composite.comp",
+     composite},
+}};
+// clang-format on
+
+// The table is indexed by Pass, and a pass reads only what an earlier pass writes.
+bool tableIsConsistent() {
+    ResourceSet written;
+    for (std::size_t i = 0; i < kPassCount; ++i) {
+        const PassDeclaration& d = kFramePasses[i];
+        if (std::size_t(d.pass) != i) return false;
+        bool readsUnwritten = false;
+        d.reads.forEach([&](Resource r) { readsUnwritten |= !written.contains(r); });
+        if (readsUnwritten) return false;
+        written |= d.writes;
+    }
+    return true;
+}
+
+}  // namespace
+
+const PassTable& framePasses() {
+    static const bool consistent = tableIsConsistent();
+    if (!consistent) fail("the frame's pass table is out of order (engine bug: engine/pipeline/frame_passes.cpp)");
+    return kFramePasses;
+}
+
+}  // namespace vct

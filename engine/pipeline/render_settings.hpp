@@ -1,0 +1,45 @@
+#pragma once
+// What a frame is asked to show and how: image size, shadow maps, octree resolution, GI and cone
+// settings, the display transform and the debug views. Checked once, before any GPU work
+// (validateRenderSettings), and against the context's limits when a Renderer takes them.
+#include <string>
+
+#include "core/image.hpp"
+
+#include "render/composite.hpp"
+#include "render/cone_trace.hpp"
+
+namespace vct {
+
+enum class ViewMode { Lit, Voxels, Radiance };
+ViewMode parseViewMode(const std::string& name);
+
+struct RenderSettings {
+    int width = 1280;
+    int height = 720;
+    int lightViewResolution = 2048;  // texels per side of each light-view (shadow) map
+    int pcfRadius = 1;               // shadow filter: (2r+1)² hardware-bilinear taps
+    DisplaySettings display;
+    ViewMode view = ViewMode::Lit;
+    bool gi = true;          // indirect light by cone tracing
+    bool photons = true;     // inject light (false: only emission and ambient occlusion)
+    ConeSettings cones;
+    int voxelLevels = 8;     // octree resolution 2^voxelLevels
+    int voxelViewLevel = 0;  // level shown by the voxel views; 0 = voxelLevels (the voxels)
+    bool bricks = true;      // filtered bricks (else raw node values) in cone tracing and voxel views
+    bool fullFrames = false;  // every pass every frame, as if the geometry changed (benchmarks)
+
+    bool operator==(const RenderSettings&) const = default;
+};
+
+// Throws a clear error for any setting out of its range. Needs no GL context.
+void validateRenderSettings(const RenderSettings& settings);
+// Throws when the settings exceed this context's limits (image or light-view map size).
+void validateRenderSettingsForContext(const RenderSettings& settings);
+
+// What a frame with these settings needs (the pass table's skip reasons and the memory budget
+// both ask here).
+bool needsOctree(const RenderSettings& settings);    // GI or a voxel view
+bool needsRadiance(const RenderSettings& settings);  // GI in the lit view, or the radiance view
+
+}  // namespace vct
