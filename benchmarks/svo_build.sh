@@ -25,7 +25,7 @@ out, levels = sys.argv[1], sys.argv[2:]
 runs = [json.load(open(f"{out}/svo_sponza_L{l}.json")) for l in levels]
 renderer = runs[0]["renderer"]
 tag = "llvmpipe" if "llvmpipe" in renderer else renderer.split()[0].lower()
-passes = ["voxelize", "svo_build", "svo_leaves", "svo_neighbours", "bricks", "bricks_mip"]
+passes = [p["name"] for p in runs[0]["graph"] if p["stage"] == "octree"]
 mib = lambda b: b / 1048576
 lines = [f"# Sparse voxel octree build: Sponza", "",
          f"Renderer: {renderer} ({runs[0]['backend']}), measured {datetime.date.today()}, warm build (second of two).",

@@ -53,7 +53,10 @@ void writeTimingsJson(const std::filesystem::path& path, const TimingsReport& re
     json["memory_total_bytes"] = total;
     json["graph"] = nlohmann::json::array();
     for (const PassRun& run : report.graph)
-        json["graph"].push_back({{"name", run.name}, {"ran", run.ran}, {"reason", run.reason}});
+        json["graph"].push_back({{"name", run.name},
+                                 {"stage", stageName(declaration(run.pass).stage)},
+                                 {"ran", run.ran},
+                                 {"reason", run.reason}});
     const FrameStatistics& s = report.statistics;
     json["statistics"] = {{"light_views_rendered", s.lightViewsRendered},
                           {"light_views", s.lightViewsTotal},
