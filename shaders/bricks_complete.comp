@@ -4,24 +4,13 @@ layout(local_size_x = 64) in;
 // node of the level whose closed cube contains q, written into the 3D brick pool. The nodes are
 // visited in a canonical order (offset −1 before 0 before +1, z then y then x), so every node that
 // shares q sums the same numbers in the same order and stores the bit-identical value.
-// Variant WORK_LIST_BORDER: only the nodes next to touched ones (radiance); the rest of the
-// pool was cleared and stays zero.
 #include "voxel_common.glsl"
 #include "octree.glsl"
 #include "bricks_common.glsl"
-#ifdef WORK_LIST_BORDER
-#include "radiance_common.glsl"
-#endif
 #include "work_list.glsl"
 
 layout(rgba32f, binding = IMAGE_PARTIAL_BRICKS) uniform readonly imageBuffer uPartial;
-// The albedo pool is RGBA16F (ρ·τ ≤ 6.9); the radiance pool RGBA32F (variant POOL_RGBA32F), since
-// radiance spans the whole range of light intensities (half floats: 6e-8 .. 65504).
-#ifdef POOL_RGBA32F
-layout(rgba32f, binding = IMAGE_BRICK_POOL) uniform writeonly image3D uBrickPool;
-#else
-layout(rgba16f, binding = IMAGE_BRICK_POOL) uniform writeonly image3D uBrickPool;
-#endif
+layout(rgba16f, binding = IMAGE_BRICK_POOL) uniform writeonly image3D uBrickPool;  // the albedo pool (ρ·τ ≤ 6.9)
 
 
 void main() {

@@ -3,15 +3,9 @@ layout(local_size_x = 64) in;
 // bricks, step 1: partial bricks of the leaf nodes from their cells (brick_layout.hpp):
 // P(q) = 1/8 · Σ V(c) over the node's cells c whose closed cube contains q, V = (ρ·α, α).
 // Also the node's raw value: the mean of V over its 8 cells.
-// Variants: RADIANCE reads the voxels' premultiplied radiance instead of albedo (and with
-// WORK_LIST_TOUCHED runs only over the touched leaves); OPACITY reads the opacity by axis bound
-// at 7 instead, V = (τx, τy, τz, τ).
 #include "voxel_common.glsl"
 #include "octree.glsl"
 #include "bricks_common.glsl"
-#ifdef RADIANCE
-#include "radiance_common.glsl"
-#endif
 #include "work_list.glsl"
 
 layout(std430, binding = SSBO_CELL_VALUES) buffer CellAlbedo { uint cellAlbedo[]; };
@@ -30,17 +24,9 @@ void main() {
         uint cell = childOf(node, slot);
         vec4 v = vec4(0.0);
         if (cell != NONE) {
-#ifdef RADIANCE
-            v = cellRadiance[cell - uLevelStart[uLevels]];
-#else
             vec4 albedo = unpackUnorm4x8(cellAlbedo[cell - uLevelStart[uLevels]]);
-#ifdef OPACITY
-            v = vec4(opticalDepth(albedo.x), opticalDepth(albedo.y), opticalDepth(albedo.z), opticalDepth(albedo.w));
-#else
             float tau = opticalDepth(albedo.a);
             v = vec4(albedo.rgb * tau, tau);
-#endif
-#endif
         }
         cells[slot] = v;
         raw += v;

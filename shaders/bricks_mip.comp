@@ -4,13 +4,9 @@ layout(local_size_x = 64) in;
 // P(Q) = Σ_children Σ_{d ∈ {−1,0,1}³, Q+d·h/2 in the child's closed cube} w(d) · P_child(Q + d·h/2),
 // w = ¼ ½ ¼ per axis. In child-lattice units (spacing h/2) the parent sample Q is at 2Q and the
 // child in slot s covers [2s, 2s+2] per axis. Also the raw value: the mean of the children's.
-// Variant WORK_LIST_TOUCHED: only the touched nodes (radiance); the others keep zero partials.
 #include "voxel_common.glsl"
 #include "octree.glsl"
 #include "bricks_common.glsl"
-#ifdef WORK_LIST_TOUCHED
-#include "radiance_common.glsl"
-#endif
 #include "work_list.glsl"
 
 layout(rgba32f, binding = IMAGE_PARTIAL_BRICKS) uniform writeonly imageBuffer uPartial;        // this level

@@ -12,18 +12,10 @@ layout(local_size_x = 8, local_size_y = 8) in;
 
 layout(binding = TEXTURE_GBUFFER_NORMAL) uniform sampler2D uNormal;
 layout(binding = TEXTURE_GBUFFER_POSITION) uniform sampler2D uPosition;
-// Radiance (premultiplied L·τ, zero where no light arrived) and opacity come from pools with the
-// same layout: unlit geometry must still block cones, so opacity is the geometry's (the opacity
-// pool), never the radiance pool's.
-layout(binding = TEXTURE_BRICK_RADIANCE) uniform sampler3D uBrickRadiance;
-layout(std430, binding = SSBO_RAW_VALUE) buffer RawRadiance { vec4 rawRadiance[]; };
-// Which way each voxel's reflected light leaves: (N·τ, τ) with N the mean lit-side normal
-// (radiance_normalize), same layout as the radiance pool.
-layout(binding = TEXTURE_BRICK_DIRECTION) uniform sampler3D uBrickDirection;
-layout(std430, binding = SSBO_RAW_DIRECTION) buffer RawDirection { vec4 rawDirection[]; };
-// Optical depth by axis (τx, τy, τz, τ) of the geometry (octree.hpp), same layout.
-layout(binding = TEXTURE_BRICK_OPACITY) uniform sampler3D uBrickOpacity;
-layout(std430, binding = SSBO_RAW_OPACITY) buffer RawOpacity { vec4 rawOpacity[]; };
+// What lies ahead of each brick sample along each of the six axis directions (brick_layout.hpp,
+// "Slabs"), one pool per direction: the radiance that reaches the sample and the slab's density,
+// (L·τ, τ); the density of the geometry everywhere, radiance only near light.
+layout(binding = TEXTURE_DIRECTIONAL_RADIANCE) uniform sampler3D uDirectional[6];
 layout(rgba32f, binding = IMAGE_INDIRECT) uniform writeonly image2D uIndirect;
 // What the pass did and saved, as 64-bit counts (low, high): samples taken, samples that empty-
 // space skipping saved (the steps the skipped nodes would have cost), pixels that saw the sky.
@@ -47,30 +39,79 @@ uniform int uUseBricks;
 uniform vec3 uVoxelOrigin;
 uniform float uVoxelScale;
 
-// The share of a voxel's stored radiance that travels back along the cone (towards -coneDirection).
-// A lit surface sends its reflected light to the side the light came from: a cone must not
-// gather the floor it starts from, or a surface lit from the other side of a wall. Voxels cannot
-// say which part of a voxel faces which way, so this uses the mean lit-side normal N (|N| = 1):
-// all of it in front of the surface from 4° above on, none behind it from 4° below on, half
-// edge-on; where N is short (lit from several sides, or emission, which leaves both ways) more of
-// it, all at N = 0. Without it, cones on lit surfaces gathered their own surface through the wide
-// filters of the coarse levels (a thin surface fills the coarse node it lies in): on the Cornell
-// box (256³, 320×240) the indirect light was 2.53× the reference's on lit surfaces and 1.47×
-// overall (indirect RMSE 0.076); with it 0.84× and 0.70× (0.033).
-float facingShare(vec4 direction, vec3 coneDirection) {
-    vec3 n = direction.a > 1e-6 ? direction.rgb / direction.a : vec3(0.0);
-    return clamp(1.0 - 0.5 * length(n) + 8.0 * dot(n, -coneDirection), 0.0, 1.0);
+// The cone being traced, as the samples see it. A cone is a bundle of directions d around its
+// axis, not one direction: a floor edge-on to the axis of a horizontal cone still fills the lower
+// part of its footprint. A surface's opacity along d is its area projected along d, the sum over
+// the axes of its area projected along a times |d_a|; averaged over the cone's directions, axis a
+// counts E[|d_a|], split into what travels along +a, E[max(d_a, 0)], and along −a. The spread is
+// modelled as normal: d_a has mean c_a·E[cos φ] and variance (1 − c_a²)·E[sin² φ]/2 (φ: angle
+// from the axis c, uniform over the cone's cap).
+vec3 coneAlongPlus, coneAlongMinus;  // E[max(±d_a, 0)] per axis
+float coneCosMean, coneSin2Mean;     // E[cos φ], E[sin² φ]
+
+// Standard normal distribution function (logistic approximation, within 0.01).
+float normalCdf(float z) { return 1.0 / (1.0 + exp(-1.702 * z)); }
+// E[max(x, 0)] for x normal with mean mu and deviation sigma.
+float positivePartMean(float mu, float sigma) {
+    if (sigma < 1e-4) return max(mu, 0.0);
+    float z = mu / sigma;
+    return mu * normalCdf(z) + sigma * 0.39894228 * exp(-0.5 * z * z);
 }
 
-// What a cone travelling along coneDirection sees of a sample: (L·τ(d)·share, τ(d)). The optical
-// depth depends on the direction, τ(d) = Σ|d_a|·τ_a from the surface's area projected along each
-// axis (octree.hpp): a floor blocks a cone crossing it but not one running along it, so a surface
-// no longer blocks the cones that start on it through the coarse levels (which made surfaces the
-// lights do not reach 0.6× too dark). The radiance L is the pool's L·τ over the geometry's τ.
-vec4 directionalSample(vec3 radianceTimesTau, vec4 direction, vec4 opacity, vec3 coneDirection) {
-    float tau = dot(abs(coneDirection), opacity.xyz);
-    vec3 radiance = opacity.w > 1e-6 ? radianceTimesTau / opacity.w : vec3(0.0);
-    return vec4(radiance * tau * facingShare(direction, coneDirection), tau);
+void beginCone(vec3 axis, float tanHalfAngle) {
+    float cosHalfAngle = 1.0 / sqrt(1.0 + tanHalfAngle * tanHalfAngle);
+    coneCosMean = 0.5 * (1.0 + cosHalfAngle);
+    coneSin2Mean = (2.0 / 3.0 - cosHalfAngle + cosHalfAngle * cosHalfAngle * cosHalfAngle / 3.0) / max(1.0 - cosHalfAngle, 1e-6);
+    for (int a = 0; a < 3; ++a) {
+        float mu = axis[a] * coneCosMean;
+        float sigma = sqrt(max((1.0 - axis[a] * axis[a]) * coneSin2Mean * 0.5, 0.0));
+        coneAlongPlus[a] = positivePartMean(mu, sigma);
+        coneAlongMinus[a] = max(coneAlongPlus[a] - mu, 0.0);  // ≥ 0 despite the approximate Φ
+    }
+}
+
+// What the cone sees of node `node` (level `level`) at p, voxel space: (L·τ, τ) with
+// τ = Σ over the six directions of their weight (coneAlong*) times their slab's density.
+// A slab along ±a starts at its sample and reaches one sample spacing ahead. The samples are
+// read one spacing ahead of p along ±a (in the node beside it, past the brick's face), so the
+// ones interpolated start at p or beyond: a sample behind p would report what lies behind the
+// cone, e.g. the lit top of a thin roof to a cone passing under it.
+// With bricks, trilinear inside the bricks; without, the samples at the node's centre (one value
+// per node and direction).
+vec4 sampleNode(uint node, int level, vec3 p) {
+    float size = float(1 << (uLevels - level));
+    vec3 local = uUseBricks != 0 ? clamp((p - vec3(unpackCell(nodeCoord[node])) * size) / size, 0.0, 1.0) : vec3(0.5);
+    vec3 inBrick = local * 2.0;  // in sample spacings
+    vec3 poolSize = vec3(textureSize(uDirectional[0], 0));
+    vec4 value = vec4(0.0);
+    // Every direction in turn, so that which pool is read is the same in every invocation.
+    for (int i = 0; i < 6; ++i) {
+        int a = i >> 1;
+        bool along = (i & 1) == 0;
+        float weight = along ? coneAlongPlus[a] : coneAlongMinus[a];
+        vec3 at = inBrick;
+        at[a] += along ? 1.0 : -1.0;
+        uint holder = node;
+        if (at[a] > 2.0 || at[a] < 0.0) {
+            holder = nodeNeighbour[node * 6u + uint(2 * a + (along ? 1 : 0))];  // −x +x −y +y −z +z
+            at[a] += along ? -2.0 : 2.0;
+        }
+        if (holder == NONE) continue;  // empty space ahead
+        value += weight * texture(uDirectional[i], (vec3(brickOrigin(holder)) + 0.5 + at) / poolSize);
+    }
+    return value;
+}
+
+// The footprint a cone samples at distance t, as a level of detail (2^lod voxels): its diameter,
+// but never coarser than half its height above the surface it starts from. A sample's slabs
+// reach up to two of its level's spacings from p (interpolation and slab): sampled coarser, a cone
+// near its surface would read the surface itself, or what lies behind it (the lit side of a thin
+// wall, a roof's sunlit top), and be blocked or lit by it. Near the surface cones are therefore
+// sampled finer than their width; at a distance their width decides.
+float coneLod(float t, float tanHalfAngle, vec3 direction, vec3 normal) {
+    float diameter = max(2.0 * t * tanHalfAngle, 1.0);
+    float height = uConeOffset + t * dot(direction, normal);
+    return min(log2(diameter), log2(max(height, 1.0)) - 1.0);
 }
 
 // The coarser of the two levels sampled for a footprint of 2^lod voxels.
@@ -78,8 +119,8 @@ int coarseLevelFor(float lod) {
     return max(uLevels - 1 - int(floor(clamp(lod, 0.0, float(uLevels - 1)))) - 1, 0);
 }
 
-// Radiance at p (voxel space) for a footprint of 2^lod voxels: trilinear inside the bricks of the
-// two nearest levels, linear between them. Returns false when p lies in an empty node of the
+// Radiance at p (voxel space) for a footprint of 2^lod voxels: the two nearest levels
+// (sampleNode), linear between them. Returns false when p lies in an empty node of the
 // coarser level, with tSkip where the ray leaves that node and emptyLevel its level.
 bool sampleRadiance(vec3 p, float lod, vec3 origin, vec3 direction, vec3 invDirection, out vec4 value,
                     out float tSkip, out int emptyLevel) {
@@ -108,27 +149,15 @@ bool sampleRadiance(vec3 p, float lod, vec3 origin, vec3 direction, vec3 invDire
     vec4 samples[2] = vec4[2](vec4(0.0), vec4(0.0));
     uint nodes[2] = uint[2](fineNode, coarseNode);
     int levels[2] = int[2](fineLevel, coarseLevel);
-    for (int k = 0; k < 2; ++k) {
-        if (nodes[k] == NONE) continue;
-        if (uUseBricks == 0) {
-            samples[k] = directionalSample(rawRadiance[nodes[k]].rgb, rawDirection[nodes[k]], rawOpacity[nodes[k]],
-                                           direction);
-            continue;
-        }
-        float size = float(1 << (uLevels - levels[k]));
-        vec3 local = clamp((p - vec3(unpackCell(nodeCoord[nodes[k]])) * size) / size, 0.0, 1.0);
-        vec3 uvw = (vec3(brickOrigin(nodes[k])) + 0.5 + local * 2.0) / vec3(textureSize(uBrickRadiance, 0));
-        samples[k] = directionalSample(texture(uBrickRadiance, uvw).rgb, texture(uBrickDirection, uvw),
-                                       texture(uBrickOpacity, uvw), direction);
-    }
+    for (int k = 0; k < 2; ++k)
+        if (nodes[k] != NONE) samples[k] = sampleNode(nodes[k], levels[k], p);
     value = fineLevel == coarseLevel ? samples[1] : mix(samples[0], samples[1], blend);
     return true;
 }
 
-// One cone: accumulated premultiplied radiance (rgb) and opacity (a). Samples are lifted off the
-// surface along its normal by uConeLift × the cone diameter: a sample's filter footprint is about
-// one diameter wide, and without the lift wide cones near the horizon would sample the filtered
-// voxels of the very surface they start from (the surface lighting itself).
+// One cone: accumulated premultiplied radiance (rgb) and opacity (a). Samples may be lifted off
+// the surface along its normal by uConeLift × the cone diameter (0 by default: coneLod keeps
+// samples off their own surface).
 vec4 traceCone(vec3 origin, vec3 normal, vec3 direction, float tanHalfAngle) {
     vec3 invDirection = 1.0 / direction;
     float n = float(1 << uLevels);
@@ -141,7 +170,8 @@ vec4 traceCone(vec3 origin, vec3 normal, vec3 direction, float tanHalfAngle) {
         vec4 value;
         float tSkip;
         int emptyLevel;
-        if (!sampleRadiance(p, log2(diameter), origin, direction, invDirection, value, tSkip, emptyLevel)) {
+        if (!sampleRadiance(p, coneLod(t, tanHalfAngle, direction, normal), origin, direction, invDirection, value, tSkip,
+                            emptyLevel)) {
             // Skip the empty node along the very sample sequence a plain march would take
             // (arithmetic only, no lookups): jumping straight to the node's exit would shift the
             // step phase from pixel to pixel and print the node grid into the image as moiré.
@@ -149,7 +179,7 @@ vec4 traceCone(vec3 origin, vec3 normal, vec3 direction, float tanHalfAngle) {
             do {
                 t += uConeStep * max(2.0 * t * tanHalfAngle, 1.0);
                 ++samplesSaved;
-            } while (t < tSkip && coarseLevelFor(log2(max(2.0 * t * tanHalfAngle, 1.0))) >= emptyLevel);
+            } while (t < tSkip && coarseLevelFor(coneLod(t, tanHalfAngle, direction, normal)) >= emptyLevel);
             --samplesSaved;  // the sample that found the node empty was looked up
             continue;
         }
@@ -188,6 +218,7 @@ void main() {
     for (int c = 0; c < uConeCount; ++c) {
         vec3 d = uConeDirection[c];
         vec3 direction = normalize(d.x * tangent + d.y * bitangent + d.z * normal);
+        beginCone(direction, uConeTanHalfAngle[c]);
         vec4 cone = traceCone(origin, normal, direction, uConeTanHalfAngle[c]);
         irradiance += uConeWeight[c] * cone.rgb;
         occlusion += uConeWeight[c] * cone.a;

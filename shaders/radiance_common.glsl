@@ -33,3 +33,13 @@ void accumulate64(uint index, uint value) {
     uint old = atomicAdd(radianceAccumulator[index], value);
     if (old + value < old) atomicAdd(radianceAccumulator[index + 1u], 1u);
 }
+
+
+// A slab's radiance for the pools: `seen` is what reaches its front face (mean over its cross-
+// section), `alpha` its opacity (1 − mean transmittance), `tau` its density, `length` its length
+// (voxels). Stored as L·τ, L = seen / α being the radiance of a uniform medium of that opacity
+// that sends `seen`; for an almost empty slab α ≈ τ·length, so the value tends to seen / length.
+vec4 slabRadiance(vec3 seen, float alpha, float tau, float length) {
+    vec3 premultiplied = max(alpha > 1e-4 ? seen * (tau / alpha) : seen / length, vec3(0.0));
+    return vec4(premultiplied, tau);
+}

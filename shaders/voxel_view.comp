@@ -1,31 +1,45 @@
 #version 450
 layout(local_size_x = 8, local_size_y = 8) in;
 // Debug view of the voxelization: per pixel, march the octree at one level and composite the
-// albedo and opacity of the nodes it crosses front to back. No lighting: each node is only shaded
-// by the face the ray entered it through (x, y, z faces at different brightness), so that the
-// voxel structure stays readable where neighbouring surfaces have the same albedo. With bricks, each
-// node's 3³ brick is sampled with hardware trilinear filtering at the middle of the segment the
-// ray spends in it; without, the node's raw value (cells: their own value) is used.
+// albedo (or radiance) and opacity of the nodes it crosses front to back. No lighting: each node
+// is only shaded by the face the ray entered it through (x, y, z faces at different brightness),
+// so that the voxel structure stays readable where neighbouring surfaces have the same albedo.
+// With bricks, each node's bricks are sampled with hardware trilinear filtering at the middle of
+// the segment the ray spends in it; without, the node's raw albedo (cells: their own value) and
+// its bricks' centre sample.
 #include "voxel_common.glsl"
 #include "octree.glsl"
 #include "bricks_common.glsl"
 #include "octree_march.glsl"
 
 layout(rgba32f, binding = IMAGE_VOXEL_VIEW) uniform writeonly image2D uOutput;
-layout(binding = TEXTURE_VIEW_BRICKS) uniform sampler3D uBrickAlbedo;
+layout(binding = TEXTURE_VIEW_ALBEDO_BRICKS) uniform sampler3D uBrickAlbedo;  // (ρ·τ, τ): also the opacity shown
 layout(std430, binding = SSBO_CELL_VALUES) buffer CellAlbedo { uint cellAlbedo[]; };
-layout(std430, binding = SSBO_CELL_RADIANCE) buffer CellRadiance { vec4 cellRadiance[]; };
-layout(binding = TEXTURE_VIEW_ALBEDO_BRICKS) uniform sampler3D uBrickOpacity;  // the albedo pool: opacity is the geometry's
-layout(std430, binding = SSBO_RAW_ALBEDO) buffer RawOpacity { vec4 rawOpacity[]; };
 layout(std430, binding = SSBO_RAW_VALUE) buffer RawValue { vec4 rawValue[]; };
+// The radiance view: the voxels' radiance, and for nodes the mean over the six directions of the
+// radiance their bricks' slabs send (brick_layout.hpp, "Slabs").
+layout(std430, binding = SSBO_CELL_RADIANCE) buffer CellRadiance { vec4 cellRadiance[]; };
+layout(binding = TEXTURE_DIRECTIONAL_RADIANCE) uniform sampler3D uDirectional[6];
 
 uniform vec3 uEyeVoxel;      // camera position in voxel space
 uniform vec3 uForward, uRight, uUp;  // camera basis (voxel space = scaled scene-local, same directions)
 uniform vec2 uTanHalfFov;    // tan(fovX/2), tan(fovY/2)
 uniform int uViewLevel;      // 1..uLevels
 uniform int uUseBricks;
-uniform int uShowRadiance;   // radiance pool instead of albedo: no face shading
+uniform int uShowRadiance;   // radiance instead of albedo: no face shading
 
+// Radiance L of node `node` at brick position `inBrick` (texels from the brick's first sample).
+vec3 nodeRadiance(uint node, vec3 inBrick) {
+    vec3 uvw = (vec3(brickOrigin(node)) + inBrick) / vec3(textureSize(uDirectional[0], 0));
+    vec3 sum = vec3(0.0);
+    for (int i = 0; i < 6; ++i) {
+        vec4 d = texture(uDirectional[i], uvw);
+        if (d.a > 1e-6) sum += d.rgb / d.a;
+    }
+    return sum / 6.0;
+}
+
+// (value·τ, τ) of a node at p: albedo or radiance, τ the geometry's (per voxel length).
 vec4 nodeValue(uint node, int level, vec3 p) {
     if (level == uLevels) {
         vec4 a = unpackUnorm4x8(cellAlbedo[node - uLevelStart[uLevels]]);
@@ -33,12 +47,13 @@ vec4 nodeValue(uint node, int level, vec3 p) {
         if (uShowRadiance != 0) return vec4(cellRadiance[node - uLevelStart[uLevels]].rgb, tau);
         return vec4(a.rgb * tau, tau);
     }
-    if (uUseBricks == 0) return vec4(rawValue[node].rgb, rawOpacity[node].a);
     float size = float(1 << (uLevels - level));
     vec3 local = clamp((p - vec3(unpackCell(nodeCoord[node])) * size) / size, 0.0, 1.0);  // 0..1 in the node
-    vec3 texel = vec3(brickOrigin(node)) + 0.5 + local * 2.0;
-    vec3 uvw = texel / vec3(textureSize(uBrickAlbedo, 0));
-    return vec4(texture(uBrickAlbedo, uvw).rgb, texture(uBrickOpacity, uvw).a);
+    vec3 inBrick = 0.5 + (uUseBricks != 0 ? local : vec3(0.5)) * 2.0;
+    vec4 albedo = uUseBricks != 0 ? texture(uBrickAlbedo, (vec3(brickOrigin(node)) + inBrick) / vec3(textureSize(uBrickAlbedo, 0)))
+                                  : rawValue[node];
+    if (uShowRadiance != 0) return vec4(nodeRadiance(node, inBrick) * albedo.a, albedo.a);
+    return albedo;
 }
 
 void main() {

@@ -15,13 +15,11 @@ flat in float gAreaScale;
 flat in vec2 gUv0;
 flat in vec2 gUv1;
 flat in vec2 gUv2;
-flat in vec3 gN0;
-flat in vec3 gN1;
-flat in vec3 gN2;
+flat in vec3 gFaceNormal;
 
 layout(std430, binding = SSBO_FRAGMENT_COUNTER) buffer FragmentCounter { uint fragmentCount; };
 // Per fragment: cell, texture colour RGBA8 (the material's colour factor and emission are applied
-// by svo_leaves), normal (octahedral), material index << 16 | area (half float).
+// by svo_leaves), the triangle's normal (octahedral), material index << 16 | area (half float).
 layout(rgba32ui, binding = IMAGE_FRAGMENTS) uniform writeonly uimageBuffer uFragments;
 
 uniform uint uCapacity;
@@ -87,25 +85,20 @@ void main() {
     vec2 r = polygonCentre - gTri0.xy;
     float s = (r.x * e2.y - r.y * e2.x) * invDet;
     float t = (e1.x * r.y - e1.y * r.x) * invDet;
-    // s, t are inside the triangle up to rounding, which in a needle-thin triangle can be large.
-    // Only the normal is clamped back into it: clamping the texture coordinates too makes llvmpipe
-    // (Mesa 22.3) run this pass tens of times slower on Sponza and changes alpha-mask decisions on
-    // its plants that exactly interpolated barycentrics agree with. A slightly extrapolated uv only
-    // shifts a texel.
+    // s, t are inside the triangle up to rounding, which in a needle-thin triangle can be large;
+    // they are not clamped: a slightly extrapolated uv only shifts a texel, while clamping them
+    // makes llvmpipe (Mesa 22.3) run this pass tens of times slower on Sponza.
     vec2 uv = gUv0 + s * (gUv1 - gUv0) + t * (gUv2 - gUv0);
     vec2 dUvdx = (e2.y * (gUv1 - gUv0) - e1.y * (gUv2 - gUv0)) * invDet;
     vec2 dUvdy = (-e2.x * (gUv1 - gUv0) + e1.x * (gUv2 - gUv0)) * invDet;
     vec4 base = materialTextureGrad(uv, dUvdx, dUvdy);
     if (materialCutsAway(base.a)) discard;
-    float sInside = clamp(s, 0.0, 1.0), tInside = clamp(t, 0.0, 1.0 - sInside);
-    vec3 normal = gN0 + sInside * (gN1 - gN0) + tInside * (gN2 - gN0);
-    if (!(dot(normal, normal) > 1e-24)) normal = vec3(0.0, 0.0, 1.0);
 
     int first = max(int(ceil(wLow - kEps)) - 1, 0);
     int last = min(int(floor(wHigh + kEps)), uResolution - 1);
     float span = wHigh - wLow;
     uint albedo = packUnorm4x8(vec4(clamp(base.rgb, 0.0, 1.0), 1.0));
-    uint packedNormal = packNormal(normalize(normal));
+    uint packedNormal = packNormal(gFaceNormal);
     for (int k = first; k <= last; ++k) {
         float share = span > 1e-6 ? max(min(wHigh, float(k + 1)) - max(wLow, float(k)), 0.0) / span
                                   : 1.0 / float(last - first + 1);

@@ -9,7 +9,6 @@ layout(triangles) in;
 layout(triangle_strip, max_vertices = 4) out;
 
 in vec3 vVoxel[];
-in vec3 vNormal[];
 in vec2 vUv[];
 
 uniform float uViewportSize;  // N, as a float
@@ -23,9 +22,7 @@ flat out float gAreaScale;  // true area / projected area = |n| / |n[axis]|
 flat out vec2 gUv0;
 flat out vec2 gUv1;
 flat out vec2 gUv2;
-flat out vec3 gN0;
-flat out vec3 gN1;
-flat out vec3 gN2;
+flat out vec3 gFaceNormal;  // the triangle's own normal: what its area projects along each axis by
 
 // The projection frame: (u, v) on the viewport and w along the projection axis.
 vec3 project(vec3 p, int axis) {
@@ -35,6 +32,7 @@ vec3 project(vec3 p, int axis) {
 }
 
 vec3 tri[3];
+vec3 triNormal;
 int triAxis;
 float triAreaScale;
 
@@ -48,9 +46,7 @@ void emit(vec2 uv) {
     gUv0 = vUv[0];
     gUv1 = vUv[1];
     gUv2 = vUv[2];
-    gN0 = vNormal[0];
-    gN1 = vNormal[1];
-    gN2 = vNormal[2];
+    gFaceNormal = triNormal;
     gl_Position = vec4(uv / uViewportSize * 2.0 - 1.0, 0.0, 1.0);
     EmitVertex();
 }
@@ -73,6 +69,7 @@ void main() {
     tri = q;
     triAxis = axis;
     triAreaScale = degenerate ? 0.0 : length(n) / dominant;
+    triNormal = degenerate ? vec3(0.0, 0.0, 1.0) : n / length(n);
 
     // Counter-clockwise order in 2D so that edge normals point outwards.
     float orientation = (q[1].x - q[0].x) * (q[2].y - q[0].y) - (q[1].y - q[0].y) * (q[2].x - q[0].x);

@@ -68,7 +68,7 @@ TEST(Shader, BindingsNamedInTheShaderInterfaceAreTheOnesCppBinds) {
     std::ofstream(dir / "bindings.comp")
         << "#version 450\nlayout(local_size_x = 1) in;\n"
            "layout(std430, binding = SSBO_CELL_AREA) buffer CellArea { float cellArea[]; };\n"
-           "layout(binding = TEXTURE_BRICK_OPACITY) uniform sampler3D uOpacity;\n"
+           "layout(binding = TEXTURE_OPACITY_PLUS) uniform sampler3D uOpacity;\n"
            "void main() { cellArea[0] = texture(uOpacity, vec3(0.5)).x; }\n";
     auto context = gl::createContext(gl::Backend::OSMesa);
     setenv("VCT_SHADER_DIR", dir.c_str(), 1);
@@ -81,7 +81,7 @@ TEST(Shader, BindingsNamedInTheShaderInterfaceAreTheOnesCppBinds) {
     EXPECT_EQ(binding, GLint(gl::SSBO_CELL_AREA));
     GLint unit = -1;
     glGetUniformiv(program.id(), glGetUniformLocation(program.id(), "uOpacity"), &unit);
-    EXPECT_EQ(unit, GLint(gl::TEXTURE_BRICK_OPACITY));
+    EXPECT_EQ(unit, GLint(gl::TEXTURE_OPACITY_PLUS));
 }
 
 TEST(Shader, CompileErrorNamesFileAndLine) {

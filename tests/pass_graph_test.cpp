@@ -30,7 +30,7 @@ RenderSettings smallSettings() {
 }
 
 const Names kEverything = {Pass::Voxelize, Pass::SvoBuild, Pass::SvoLeaves, Pass::SvoNeighbours, Pass::Bricks, Pass::BricksMip,
-                           Pass::LightView, Pass::Inject, Pass::RadianceMip, Pass::RadianceBorder, Pass::GBuffer, Pass::DirectLighting,
+                           Pass::LightView, Pass::Inject, Pass::RadianceLeaves, Pass::RadianceMip, Pass::GBuffer, Pass::DirectLighting,
                            Pass::ConeTrace, Pass::Composite};
 
 Camera moved(Camera c) {
@@ -66,7 +66,7 @@ TEST_F(PassGraphTest, EachChangeRerunsExactlyItsDependentPasses) {
 
     renderer.setLights(turned(renderer.lights()));
     renderer.renderFrame(moved(camera));
-    EXPECT_EQ(ran(renderer), (Names{Pass::LightView, Pass::Inject, Pass::RadianceMip, Pass::RadianceBorder, Pass::DirectLighting,
+    EXPECT_EQ(ran(renderer), (Names{Pass::LightView, Pass::Inject, Pass::RadianceLeaves, Pass::RadianceMip, Pass::DirectLighting,
                                     Pass::ConeTrace, Pass::Composite}))
         << "light moved";
 
@@ -74,7 +74,7 @@ TEST_F(PassGraphTest, EachChangeRerunsExactlyItsDependentPasses) {
     brighter[0].intensity *= 2.0;
     renderer.setLights(brighter);
     renderer.renderFrame(moved(camera));
-    EXPECT_EQ(ran(renderer), (Names{Pass::LightView, Pass::Inject, Pass::RadianceMip, Pass::RadianceBorder, Pass::DirectLighting,
+    EXPECT_EQ(ran(renderer), (Names{Pass::LightView, Pass::Inject, Pass::RadianceLeaves, Pass::RadianceMip, Pass::DirectLighting,
                                     Pass::ConeTrace, Pass::Composite}))
         << "light intensity changed";
 
@@ -82,8 +82,8 @@ TEST_F(PassGraphTest, EachChangeRerunsExactlyItsDependentPasses) {
     red.baseColor = {0.9f, 0.1f, 0.1f};
     renderer.setMaterial(0, red);
     renderer.renderFrame(moved(camera));
-    EXPECT_EQ(ran(renderer), (Names{Pass::SvoLeaves, Pass::Bricks, Pass::BricksMip, Pass::LightView, Pass::Inject, Pass::RadianceMip,
-                                    Pass::RadianceBorder, Pass::GBuffer, Pass::DirectLighting, Pass::ConeTrace, Pass::Composite}))
+    EXPECT_EQ(ran(renderer), (Names{Pass::SvoLeaves, Pass::Bricks, Pass::BricksMip, Pass::LightView, Pass::Inject, Pass::RadianceLeaves,
+                                    Pass::RadianceMip, Pass::GBuffer, Pass::DirectLighting, Pass::ConeTrace, Pass::Composite}))
         << "a material's colour changed";
 
     RenderSettings s = renderer.settings();
@@ -101,7 +101,7 @@ TEST_F(PassGraphTest, EachChangeRerunsExactlyItsDependentPasses) {
     renderer.setSettings(s);
     renderer.renderFrame(moved(camera));
     EXPECT_EQ(ran(renderer), (Names{Pass::Voxelize, Pass::SvoBuild, Pass::SvoLeaves, Pass::SvoNeighbours, Pass::Bricks, Pass::BricksMip,
-                                    Pass::Inject, Pass::RadianceMip, Pass::RadianceBorder, Pass::ConeTrace, Pass::Composite}))
+                                    Pass::Inject, Pass::RadianceLeaves, Pass::RadianceMip, Pass::ConeTrace, Pass::Composite}))
         << "voxel levels";
 
     s.gi = false;

@@ -154,7 +154,7 @@ TEST(DirectLighting, TimingsJsonListsEveryPassOfTheGiFrame) {
     const auto first = renderTimings("--voxel-levels 5 --frames 1");
     EXPECT_EQ(passNames(first),
               passNames({Pass::Voxelize, Pass::SvoBuild, Pass::SvoLeaves, Pass::SvoNeighbours, Pass::Bricks, Pass::BricksMip,
-                                        Pass::LightView, Pass::Inject, Pass::RadianceMip, Pass::RadianceBorder, Pass::GBuffer,
+                                        Pass::LightView, Pass::Inject, Pass::RadianceLeaves, Pass::RadianceMip, Pass::GBuffer,
                                         Pass::DirectLighting, Pass::ConeTrace, Pass::Composite}));
     EXPECT_EQ(first["voxels"]["levels"], 5);
     // Second frame of a static scene: nothing changed, so no pass runs at all, and the graph says so.

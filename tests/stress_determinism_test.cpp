@@ -36,8 +36,8 @@ std::vector<std::pair<std::string, std::vector<std::uint8_t>>> snapshot(const Sc
         if (bytes) glGetNamedBufferSubData(b.id(), 0, GLsizeiptr(bytes), data.data());
         pools.emplace_back(name, std::move(data));
     };
-    auto texture = [&](const char* name, GLuint t) {
-        const glm::ivec3 size = 3 * o.brickPoolBricks;
+    auto texture = [&](const char* name, GLuint t, glm::ivec3 bricks) {
+        const glm::ivec3 size = 3 * bricks;
         std::vector<std::uint8_t> data(std::size_t(size.x) * size.y * size.z * 16);
         glGetTextureImage(t, 0, GL_RGBA, GL_FLOAT, GLsizei(data.size()), data.data());
         pools.emplace_back(name, std::move(data));
@@ -49,17 +49,15 @@ std::vector<std::pair<std::string, std::vector<std::uint8_t>>> snapshot(const Sc
     buffer("cell normal", o.cellNormal, std::size_t(o.cellCount()) * 4);
     buffer("cell area", o.cellArea, std::size_t(o.cellCount()) * 4);
     buffer("node raw values", o.rawValue, std::size_t(o.nodeCount) * 16);
-    texture("albedo bricks", o.brickAlbedo.id());
+    texture("albedo bricks", o.brickAlbedo.id(), o.brickPoolBricks);
     buffer("cell opacity by axis", o.cellOpacity, std::size_t(o.cellCount()) * 4);
-    buffer("node raw opacity by axis", o.rawOpacity, std::size_t(o.nodeCount) * 16);
-    texture("opacity bricks", o.brickOpacity.id());
+    texture("opacity bricks +", o.brickOpacityPlus.id(), o.brickPoolBricks);
+    texture("opacity bricks -", o.brickOpacityMinus.id(), o.brickPoolBricks);
     buffer("photon sums", r.accumulators, std::size_t(o.cellCount()) * 4 * kAccumulatorWords);
     buffer("cell radiance", r.cellRadiance, std::size_t(o.cellCount()) * 16);
-    buffer("node raw radiance", r.rawRadiance, std::size_t(o.nodeCount) * 16);
-    texture("radiance bricks", r.brickRadiance.id());
     buffer("cell radiance direction", r.cellDirection, std::size_t(o.cellCount()) * 16);
-    buffer("node raw radiance direction", r.rawDirection, std::size_t(o.nodeCount) * 16);
-    texture("radiance direction bricks", r.brickDirection.id());
+    for (int i = 0; i < 6; ++i)
+        texture(("radiance bricks " + std::to_string(i)).c_str(), r.directional[i].id(), o.brickPoolBricks);
     for (Aov aov : {Aov::Final, Aov::Indirect}) {
         settings.display.aov = aov;
         renderer.setSettings(settings);

@@ -21,6 +21,14 @@ inline float halfToFloat(std::uint16_t h) {
     return (h & 0x8000) ? -value : value;
 }
 
+// A brick pool (3D texture of `bricks` bricks per axis, 3³ texels each) as RGBA floats, x fastest.
+inline std::vector<float> readBrickPool(const gl::Texture& texture, glm::ivec3 bricks) {
+    const glm::ivec3 size = 3 * bricks;
+    std::vector<float> values(std::size_t(size.x) * size.y * size.z * 4);
+    glGetTextureImage(texture.id(), 0, GL_RGBA, GL_FLOAT, GLsizei(values.size() * 4), values.data());
+    return values;
+}
+
 template <class T>
 std::vector<T> readBuffer(const gl::Buffer& buffer, std::size_t count) {
     std::vector<T> values(count);
@@ -37,20 +45,26 @@ struct GpuOctreeData {
     std::vector<glm::vec4> rawValue;
     std::vector<float> brickPool;  // RGBA, (3·bx) × (3·by) × (3·bz)
     glm::ivec3 brickPoolBricks{0};
+    // Slab opacity (brick_layout.hpp, "Slabs"): cell opacity by axis, RGBA8 (αx, αy, αz, α) per
+    // cell; the pools (τ+x, τ+y, τ+z, mean) and (τ−x, τ−y, τ−z, mean), laid out as brickPool.
+    std::vector<std::uint32_t> cellOpacity;
+    std::vector<float> opacityPlus, opacityMinus;
     // Fragment list: cell and albedo of every fragment.
     std::vector<std::uint32_t> fragmentCell, fragmentAlbedo, fragmentMaterial;  // albedo: the texture's colour
     std::vector<float> fragmentArea;
 
     std::uint32_t cellIndexOf(std::uint32_t node) const { return node - levelStart[levels]; }
     // Complete brick sample s (i + 3j + 9k) of `node`.
-    glm::vec4 brickSample(std::uint32_t node, int s) const {
+    glm::vec4 brickSample(std::uint32_t node, int s) const { return poolSample(brickPool, node, s); }
+    // Sample s of `node` in any pool of the brick layout (brickPool, opacityPlus, opacityMinus).
+    glm::vec4 poolSample(const std::vector<float>& pool, std::uint32_t node, int s) const {
         const int b = int(node);
         const glm::ivec3 origin = 3 * glm::ivec3(b % brickPoolBricks.x, (b / brickPoolBricks.x) % brickPoolBricks.y,
                                                  b / (brickPoolBricks.x * brickPoolBricks.y));
         const glm::ivec3 t = origin + glm::ivec3(s % 3, (s / 3) % 3, s / 9);
         const glm::ivec3 size = 3 * brickPoolBricks;
         const std::size_t i = ((std::size_t(t.z) * size.y + t.y) * size.x + t.x) * 4;
-        return {brickPool[i], brickPool[i + 1], brickPool[i + 2], brickPool[i + 3]};
+        return {pool[i], pool[i + 1], pool[i + 2], pool[i + 3]};
     }
     std::set<std::uint32_t> cellSet() const {
         return {coord.begin() + levelStart[levels], coord.begin() + levelStart[levels] + levelCount[levels]};
@@ -94,6 +108,9 @@ private:
         const glm::ivec3 size = 3 * o.brickPoolBricks;
         d.brickPool.resize(std::size_t(size.x) * size.y * size.z * 4);
         glGetTextureImage(o.brickAlbedo.id(), 0, GL_RGBA, GL_FLOAT, GLsizei(d.brickPool.size() * 4), d.brickPool.data());
+        d.cellOpacity = readBuffer<std::uint32_t>(o.cellOpacity, o.cellCount());
+        d.opacityPlus = readBrickPool(o.brickOpacityPlus, o.brickPoolBricks);
+        d.opacityMinus = readBrickPool(o.brickOpacityMinus, o.brickPoolBricks);
         const FragmentList& f = builder().fragments();
         const auto raw = readBuffer<std::uint32_t>(f.data, std::size_t(f.count) * 4);
         for (std::size_t i = 0; i < f.count; ++i) {

@@ -36,13 +36,10 @@
     X(SSBO_BORDER_LIST, 17)                                                                       \
     X(SSBO_CELL_RADIANCE, 18)        /* per voxel: (L·τ, τ), or the channel being filtered */     \
     X(SSBO_INDIRECT_ARGS, 19)                                                                     \
-    X(SSBO_RAW_ALBEDO, 20)           /* voxel_view: the geometry's raw values, for opacity */     \
     X(SSBO_MATERIALS, 21)            /* {baseColor, emissive} per material */                     \
     X(SSBO_CONE_COUNTERS, 22)                                                                     \
     X(SSBO_CELL_DIRECTION, 23)                                                                    \
-    X(SSBO_RAW_DIRECTION, 24)                                                                     \
     X(SSBO_CELL_OPACITY, 25)                                                                      \
-    X(SSBO_RAW_OPACITY, 26)                                                                       \
     /* Image units (glBindImageTexture). */                                                       \
     X(IMAGE_FRAGMENTS, 0)            /* voxel-fragment list, RGBA32UI */                          \
     X(IMAGE_FRAGMENT_NODE, 1)        /* the node of each fragment, R32UI */                       \
@@ -51,6 +48,9 @@
     X(IMAGE_PARTIAL_BRICKS, 0)                                                                    \
     X(IMAGE_CHILD_PARTIAL_BRICKS, 1)                                                              \
     X(IMAGE_BRICK_POOL, 1)                                                                        \
+    X(IMAGE_OPACITY_PLUS, 1)         /* bricks_opacity: the pool of slabs along +x +y +z */       \
+    X(IMAGE_OPACITY_MINUS, 2)        /* and along −x −y −z */                                     \
+    X(IMAGE_DIRECTIONAL_RADIANCE, 2) /* the six radiance pools, units 2..7 (+x −x +y −y +z −z) */  \
     X(IMAGE_DIRECT, 0)                                                                            \
     X(IMAGE_INDIRECT, 0)                                                                          \
     X(IMAGE_VOXEL_VIEW, 0)                                                                        \
@@ -66,11 +66,10 @@
     X(TEXTURE_DIRECT, 4)                                                                          \
     X(TEXTURE_DEBUG_IMAGE, 5)                                                                     \
     X(TEXTURE_INDIRECT, 6)                                                                        \
-    X(TEXTURE_BRICK_RADIANCE, 3)     /* cone_trace, beside the G-buffer's normal and position */  \
-    X(TEXTURE_BRICK_DIRECTION, 4)                                                                 \
-    X(TEXTURE_BRICK_OPACITY, 5)                                                                   \
-    X(TEXTURE_VIEW_BRICKS, 0)        /* voxel_view: the pool shown */                             \
-    X(TEXTURE_VIEW_ALBEDO_BRICKS, 1) /* voxel_view: the geometry's pool, for opacity */           \
+    X(TEXTURE_OPACITY_PLUS, 3)       /* opacity of the slabs along +x +y +z (brick_layout.hpp) */ \
+    X(TEXTURE_OPACITY_MINUS, 4)      /* along −x −y −z */                                         \
+    X(TEXTURE_DIRECTIONAL_RADIANCE, 6) /* the six radiance pools, units 6..11 */                  \
+    X(TEXTURE_VIEW_ALBEDO_BRICKS, 1) /* voxel_view: the albedo pool */                     \
     X(TEXTURE_LIGHT_POSITION, 0)     /* inject: the light-view map's photons */                   \
     X(TEXTURE_LIGHT_FLUX, 1)                                                                      \
     X(TEXTURE_LIGHT_NORMAL, 2)                                                                    \

@@ -26,13 +26,8 @@ void PhotonInjection::run(const Octree& octree, RadianceVolume& volume, const Sc
     const float zeros[4] = {0, 0, 0, 0};
     for (const gl::Buffer* b : {&volume.accumulators, &volume.touchedFlag, &volume.borderFlag, &volume.listCounts})
         glClearNamedBufferData(b->id(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
-    for (const gl::Buffer* b : {&volume.cellRadiance, &volume.rawRadiance, &volume.cellDirection, &volume.rawDirection})
+    for (const gl::Buffer* b : {&volume.cellRadiance, &volume.cellDirection})
         glClearNamedBufferData(b->id(), GL_RGBA32F, GL_RGBA, GL_FLOAT, zeros);
-    for (const auto* partials : {&volume.partial, &volume.partialDirection})
-        for (const PartialBricks& partial : *partials)
-            glClearNamedBufferData(partial.data.id(), GL_RGBA32F, GL_RGBA, GL_FLOAT, zeros);
-    glClearTexImage(volume.brickRadiance.id(), 0, GL_RGBA, GL_FLOAT, zeros);
-    glClearTexImage(volume.brickDirection.id(), 0, GL_RGBA, GL_FLOAT, zeros);
     glMemoryBarrier(GL_ALL_BARRIER_BITS);
     volume.wattsPerUnit = fluxWattsPerUnit(lights, lightViews);
     std::uint64_t texels = 0;

@@ -1,13 +1,13 @@
 #pragma once
 // Outgoing radiance stored in the octree (DESIGN 5.3): per voxel the area-average outgoing
-// radiance of the surface inside it, premultiplied by opacity, then filtered into a radiance
-// brick pool with exactly the brick definitions of the albedo pool (brick_layout.hpp).
-// Rebuilt when lights change, only through the nodes that received light ("touched").
+// radiance of the surface inside it and the direction its reflected part leaves in, then filtered
+// into bricks seen along each of six directions (brick_layout.hpp, "Slabs"). Rebuilt when lights
+// change, only through the nodes beside light.
+#include <array>
 #include <vector>
 
 #include "gl/objects.hpp"
 #include "gl/shader_interface.hpp"
-#include "voxel/brick_pool.hpp"
 #include "voxel/octree.hpp"
 
 namespace vct {
@@ -25,22 +25,17 @@ struct RadianceVolume {
     // Touched nodes: a flag per node (all levels and the cells) and, per level, the list of the
     // touched nodes stored at [levelStart[l], levelStart[l] + count[l]) of `touchedList`.
     // "Border" nodes: touched nodes and every node sharing a brick sample with one (their 3³
-    // neighbourhood), whose complete samples can change.
+    // neighbourhood): the nodes whose samples can be other than zero.
     gl::Buffer touchedFlag, touchedList;
     gl::Buffer borderFlag, borderList;
     gl::Buffer listCounts;    // uints: touched counts per level, border counts per level, photons missed
     gl::Buffer indirectArgs;  // dispatch arguments, 3 uints per slot
 
-    std::vector<PartialBricks> partial;  // per level 0..L−1
-    // RGBA32F, same layout as Octree::brickAlbedo. Not half floats: radiance follows the lights
-    // over 12 decades (1e-6 .. 1e6 W/sr) and half floats would flush dim light to 0 and turn
-    // bright light into Inf (and the image into NaN).
-    gl::Texture brickRadiance;
-    gl::Buffer rawRadiance;              // vec4 per node: mean over its cells
-    // The direction, filtered through the same nodes into its own pool (RGBA16F: |N·τ| ≤ 6.9).
-    std::vector<PartialBricks> partialDirection;
-    gl::Texture brickDirection;
-    gl::Buffer rawDirection;
+    // What each brick sample's slab sends towards a cone travelling along +x, −x, +y, −y, +z, −z
+    // (brick_layout.hpp, "Slabs"), premultiplied by the slab's density: (L·τ, τ), RGBA32F, brick =
+    // node. Not half floats: radiance follows the lights over 12 decades (1e-6 .. 1e6 W/sr) and half
+    // floats would flush dim light to 0 and turn bright light into Inf (and the image into NaN).
+    std::array<gl::Texture, 6> directional;
 
     double wattsPerUnit = 0.0;  // fixed point of the photon sums (fluxWattsPerUnit, inject.hpp)
 

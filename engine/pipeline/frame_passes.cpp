@@ -33,7 +33,7 @@ const char* resourceName(Resource resource) {
         case Resource::GeometryBricks: return "geometry bricks";
         case Resource::LightViewMaps: return "light-view maps";
         case Resource::CellRadiance: return "cell radiance";
-        case Resource::RadiancePartials: return "radiance partials";
+        case Resource::LeafRadiance: return "leaf radiance";
         case Resource::RadianceBricks: return "radiance bricks";
         case Resource::GBuffer: return "gbuffer";
         case Resource::DirectRadiance: return "direct radiance";
@@ -93,9 +93,10 @@ void injectPhotons(FrameResources& f) {
     f.injection->run(octree, *f.radiance, *f.scene, f.lights, f.lightViews.maps(), f.settings.photons);
 }
 
-void completeRadianceBricks(FrameResources& f) {
+void filterLeafRadiance(FrameResources& f) {
     const Octree& octree = f.svo->octree();
-    f.radianceFilter->border(octree, *f.radiance);
+    if (!f.radianceFilter) f.radianceFilter = std::make_unique<RadianceFilter>();
+    f.radianceFilter->leaves(octree, *f.radiance);
     const RadianceStatistics r = readRadianceStatistics(octree, *f.radiance);
     f.statistics.touchedNodesPerLevel = r.touchedPerLevel;
     f.statistics.photonsMissed = r.photonsMissed;
@@ -113,10 +114,8 @@ void traceCones(FrameResources& f) {
 void renderVoxelView(FrameResources& f, const FrameView& v) {
     if (!f.voxelView) f.voxelView = std::make_unique<VoxelView>(f.settings.width, f.settings.height);
     const int level = f.settings.voxelViewLevel ? f.settings.voxelViewLevel : f.settings.voxelLevels;
-    const VoxelView::Source source = f.settings.view == ViewMode::Radiance
-                                         ? VoxelView::radiance(*f.radiance)
-                                         : VoxelView::albedo(f.svo->octree());
-    f.voxelView->render(f.svo->octree(), source, *v.camera, *f.scene, level, f.settings.bricks);
+    const RadianceVolume* radiance = f.settings.view == ViewMode::Radiance ? f.radiance.get() : nullptr;
+    f.voxelView->render(f.svo->octree(), radiance, *v.camera, *f.scene, level, f.settings.bricks);
 }
 
 void composite(FrameResources& f, const FrameView& v) {
@@ -173,17 +172,14 @@ const PassTable kFramePasses = {{
      {I::PhotonSettings}, {R::LightViewMaps, R::CellValues}, {R::CellRadiance}, unlessRadiance,
      "inject.comp, inject_emissive.comp, radiance_normalize.comp",
      [](FrameResources& f, const FrameView&) { injectPhotons(f); }},
+    {Pass::RadianceLeaves, "radiance_leaves", Stage::Radiance,
+     {}, {R::CellValues, R::GeometryBricks, R::CellRadiance}, {R::LeafRadiance}, unlessRadiance,
+     "radiance_clear.comp, touch_parents.comp, touch_border.comp, radiance_leaves.comp",
+     [](FrameResources& f, const FrameView&) { filterLeafRadiance(f); }},
     {Pass::RadianceMip, "radiance_mip", Stage::Radiance,
-     {}, {R::CellRadiance}, {R::RadiancePartials}, unlessRadiance,
-     "touch_parents.comp, bricks_leaf.comp, bricks_mip.comp",
-     [](FrameResources& f, const FrameView&) {
-         if (!f.radianceFilter) f.radianceFilter = std::make_unique<RadianceFilter>();
-         f.radianceFilter->mip(f.svo->octree(), *f.radiance);
-     }},
-    {Pass::RadianceBorder, "radiance_border", Stage::Radiance,
-     {}, {R::RadiancePartials, R::Neighbours}, {R::RadianceBricks}, unlessRadiance,
-     "touch_border.comp, bricks_complete.comp",
-     [](FrameResources& f, const FrameView&) { completeRadianceBricks(f); }},
+     {}, {R::LeafRadiance, R::GeometryBricks}, {R::RadianceBricks}, unlessRadiance,
+     "radiance_mip.comp",
+     [](FrameResources& f, const FrameView&) { f.radianceFilter->mip(f.svo->octree(), *f.radiance); }},
     {Pass::GBuffer, "gbuffer", Stage::Camera,
      {I::Geometry, I::Materials, I::Camera, I::OutputSize}, {}, {R::GBuffer}, unlessLitView,
      "scene.vert, gbuffer.frag",
@@ -195,7 +191,7 @@ const PassTable kFramePasses = {{
          f.direct->render(*f.gbuffer, *f.scene, f.lights, f.lightViews.maps(), f.settings.pcfRadius);
      }},
     {Pass::ConeTrace, "cone_trace", Stage::Camera,
-     {I::ConeSettings}, {R::GBuffer, R::RadianceBricks, R::GeometryBricks}, {R::IndirectIrradiance}, unlessConeTrace,
+     {I::ConeSettings}, {R::GBuffer, R::RadianceBricks}, {R::IndirectIrradiance}, unlessConeTrace,
      "cone_trace.comp",
      [](FrameResources& f, const FrameView&) { traceCones(f); }},
     {Pass::VoxelView, "voxel_view", Stage::Camera,

@@ -32,8 +32,8 @@ enum class Pass {
     BricksMip,
     LightView,
     Inject,
+    RadianceLeaves,
     RadianceMip,
-    RadianceBorder,
     GBuffer,
     DirectLighting,
     ConeTrace,
@@ -72,8 +72,8 @@ enum class Resource {
     GeometryBricks,     // complete albedo and opacity bricks of every level
     LightViewMaps,      // per light: shadow map and photons
     CellRadiance,       // per voxel: outgoing radiance and its direction
-    RadiancePartials,   // radiance partial bricks of the touched nodes
-    RadianceBricks,     // complete radiance and direction bricks
+    LeafRadiance,       // the radiance bricks, filled at the leaves, and which nodes are near light
+    RadianceBricks,     // the radiance bricks of every level
     GBuffer,
     DirectRadiance,
     IndirectIrradiance,

@@ -119,7 +119,7 @@ std::vector<MemoryPool> Renderer::memory() const {
         pools.push_back({"brick pool", voxels.brickPools});
     }
     if (frame_.radiance)
-        pools.push_back({"radiance volume (voxels, lists, partial and complete bricks)",
+        pools.push_back({"radiance volume (voxels, lists, six radiance pools)",
                          frame_.radiance->bytes(frame_.svo->octree())});
     if (frame_.coneTrace) pools.push_back({"indirect irradiance", frame_.coneTrace->bytes()});
     if (frame_.voxelView) pools.push_back({"voxel view", frame_.voxelView->bytes()});

@@ -1,6 +1,7 @@
 #include "render/cone_trace.hpp"
 
 #include <cmath>
+#include <cstdlib>
 
 #include "core/error.hpp"
 #include "gl/compute.hpp"
@@ -51,6 +52,7 @@ void ConeTrace::render(const GBuffer& gbuffer, const Octree& octree, const Radia
     const GLuint p = call.program();
     octree.bind(p);
     setBrickPoolUniforms(p, octree);
+    for (int i = 0; i < 6; ++i) call.texture(gl::TEXTURE_DIRECTIONAL_RADIANCE + i, radiance.directional[i].id());
     glProgramUniform3fv(p, glGetUniformLocation(p, "uConeDirection"), GLsizei(cones.size()), &directions[0].x);
     glProgramUniform1fv(p, glGetUniformLocation(p, "uConeTanHalfAngle"), GLsizei(cones.size()), tangents.data());
     glProgramUniform1fv(p, glGetUniformLocation(p, "uConeWeight"), GLsizei(cones.size()), weights.data());
@@ -67,12 +69,6 @@ void ConeTrace::render(const GBuffer& gbuffer, const Octree& octree, const Radia
         .uniform("uVoxelScale", float(1.0 / octree.grid.voxelSize))
         .texture(gl::TEXTURE_GBUFFER_NORMAL, gbuffer.normal())
         .texture(gl::TEXTURE_GBUFFER_POSITION, gbuffer.position())
-        .texture(gl::TEXTURE_BRICK_RADIANCE, radiance.brickRadiance.id())
-        .texture(gl::TEXTURE_BRICK_DIRECTION, radiance.brickDirection.id())
-        .texture(gl::TEXTURE_BRICK_OPACITY, octree.brickOpacity.id())
-        .storage(gl::SSBO_RAW_OPACITY, octree.rawOpacity)
-        .storage(gl::SSBO_RAW_DIRECTION, radiance.rawDirection)
-        .storage(gl::SSBO_RAW_VALUE, radiance.rawRadiance)
         .storage(gl::SSBO_CONE_COUNTERS, counters_)
         .image(gl::IMAGE_INDIRECT, indirect_.id(), GL_WRITE_ONLY, GL_RGBA32F)
         .dispatchImage(width_, height_, GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);

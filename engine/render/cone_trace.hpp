@@ -13,7 +13,7 @@ struct ConeSettings {
     float apertureScale = 1.0f; // multiplies the derived half-angles (tan), for the benchmark sweep
     float step = 0.5f;          // step length / cone diameter
     float offset = 1.5f;        // start offset along the normal, voxels
-    float lift = 1.0f;          // extra normal offset per unit of cone diameter (self-illumination)
+    float lift = 0.0f;          // extra normal offset per unit of cone diameter
     float maxDistance = 0.0f;   // voxels; 0 = through the whole volume
     bool bricks = true;         // false: raw node values, no interpolation (`--no-bricks`)
 

@@ -42,13 +42,14 @@ std::size_t estimateVoxelBytes(const Scene& scene, int levels, bool radiance) {
     for (const Material& m : scene.materials) emissive = emissive || m.emissive != glm::vec3(0.0f);
     // Bytes per fragment, occupied voxel and interior node of the pools (voxel/octree.hpp,
     // lighting/radiance_volume.hpp); the temporary cell accumulators of svo_leaves included.
-    // Two geometry pools (albedo, opacity by axis) of 27 RGBA16F samples and a raw value per node.
+    // Three geometry pools (albedo; opacity of the slabs along +axes and −axes) of 27 RGBA16F
+    // samples and a raw value per node.
     double bytes = fragments * (16 + 4) + cells * (16 + 16 + 4 + 64 + 24 + (emissive ? 16 : 0)) +
-                   nodes * (16 + 24 + 2 * (27 * 8 + 16) + 27 * 16);
+                   nodes * (16 + 24 + 3 * 27 * 8 + 16 + 27 * 16);
     bytes += cells * 16;  // node pool entries of the voxels themselves
-    // Radiance: accumulators, cell radiance and direction, flags; per node raw values, partial
-    // bricks and pool samples of radiance (RGBA32F) and its direction (partials RGBA32F, pool RGBA16F).
-    if (radiance) bytes += cells * (40 + 16 + 16 + 8) + nodes * (8 + 8 + 16 + 16 + 27 * 16 * 2 + 27 * 16 + 27 * 8);
+    // Radiance: accumulators, cell radiance and direction, flags; per node flags and lists and the
+    // six radiance pools of 27 RGBA32F samples (brick_layout.hpp, "Slabs").
+    if (radiance) bytes += cells * (40 + 16 + 16 + 8) + nodes * (8 + 8 + 6 * 27 * 16);
     return std::size_t(bytes * 1.1);  // brick pools are rounded up to whole rows and slabs
 }
 

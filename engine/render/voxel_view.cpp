@@ -14,8 +14,8 @@ VoxelView::VoxelView(int width, int height)
       image_(gl::createTexture2D(GL_RGBA32F, width, height, 1, "voxel view")),
       program_(gl::buildProgram({{GL_COMPUTE_SHADER, "voxel_view.comp"}})) {}
 
-void VoxelView::render(const Octree& octree, const Source& source, const Camera& camera, const Scene& scene, int level,
-                       bool useBricks) {
+void VoxelView::render(const Octree& octree, const RadianceVolume* radiance, const Camera& camera, const Scene& scene,
+                       int level, bool useBricks) {
     if (level < 1 || level > octree.levels)
         fail("--voxel-level ", level, " is out of range; this octree has levels 1..", octree.levels,
              " (", octree.levels, " = the voxels themselves)");
@@ -38,14 +38,15 @@ void VoxelView::render(const Octree& octree, const Source& source, const Camera&
         .uniform("uTanHalfFov", glm::vec2(tanX, tanY))
         .uniform("uViewLevel", level)
         .uniform("uUseBricks", useBricks ? 1 : 0)
-        .uniform("uShowRadiance", source.radiance ? 1 : 0)
-        .texture(gl::TEXTURE_VIEW_BRICKS, source.bricks)
+        .uniform("uShowRadiance", radiance ? 1 : 0)
         .texture(gl::TEXTURE_VIEW_ALBEDO_BRICKS, octree.brickAlbedo.id())
         .storage(gl::SSBO_CELL_VALUES, octree.cellAlbedo)
-        .storage(gl::SSBO_RAW_VALUE, source.raw)
-        .storage(gl::SSBO_RAW_ALBEDO, octree.rawValue)
+        .storage(gl::SSBO_RAW_VALUE, octree.rawValue)
         .image(gl::IMAGE_VOXEL_VIEW, image_.id(), GL_WRITE_ONLY, GL_RGBA32F);
-    if (source.radiance) call.storage(gl::SSBO_CELL_RADIANCE, source.cells);
+    if (radiance) {
+        call.storage(gl::SSBO_CELL_RADIANCE, radiance->cellRadiance);
+        for (int i = 0; i < 6; ++i) call.texture(gl::TEXTURE_DIRECTIONAL_RADIANCE + i, radiance->directional[i].id());
+    }
     call.dispatchImage(width_, height_, GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
 }
 

@@ -1,14 +1,16 @@
 #pragma once
-// What a brick sample means (DESIGN 5.4). The GPU passes (bricks.cpp, bricks_mip.cpp) and the
-// CPU reference in tests/reference/ both implement exactly these definitions.
+// What a brick sample means (DESIGN 5.4). Two kinds of bricks share one lattice: the albedo
+// bricks, filtered linearly (below, to "Reading"), which the voxel views show; and the slab bricks
+// of opacity and radiance that cones read (last section, "Slabs"). The GPU passes (bricks.cpp,
+// bricks_mip.cpp, radiance_filter.cpp) and the CPU references in tests/reference/ implement
+// exactly these definitions.
 //
 // Cells and values. The finest voxels ("cells") are unit cubes [c, c+1)³ of voxel space. An
 // occupied cell has albedo ρ (mean of its fragments) and opacity α = min(1, A) where A is the
-// surface area inside it in voxel-face units (a plane straight through a cell has A = 1). Bricks
-// filter its optical depth τ = −ln(1 − min(α, 0.999)) (per voxel length), not α: a density
-// filtered linearly keeps its integral along any line, so a one-voxel wall stays opaque at every
-// level (averaging α would halve it per level). The value is weighted by τ: V(c) = (ρ·τ, τ);
-// the radiance pool holds (L·τ, τ). Empty cells have V = 0.
+// surface area inside it in voxel-face units (a plane straight through a cell has A = 1), and
+// opacity along each axis α_a = min(1, A_a), A_a the area projected along a. The albedo bricks
+// filter optical depth τ = −ln(1 − min(α, 0.999)) (per voxel length) weighted: V(c) = (ρ·τ, τ).
+// Empty cells have V = 0.
 //
 // Lattice. Level l has nodes of edge e_l = 2^(L−l) voxels and a sample lattice of spacing
 // h_l = e_l / 2: a node's 3×3×3 brick holds the samples at its corners, edge midpoints, face
@@ -38,6 +40,33 @@
 //
 // Properties the tests rely on: a region filled with V = v gives S = v everywhere inside it
 // (the weights sum to 1 at every level); the results do not depend on thread order.
+//
+// Slabs. What a cone needs of a region is how much it blocks and how much light it sends along
+// the cone, and both depend on the direction: a one-voxel wall must stay opaque along its normal
+// at every level, a node a quarter covered by a pillar must pass three quarters of a cone's light,
+// and the dark side of a lit wall must look dark. Averaging α or τ over a node's volume gets the
+// first or the second wrong (the mean of exp(−τ) is not exp(−mean τ)); and a value without
+// direction cannot tell the sides of a wall apart. So each sample q of spacing h holds, for each of
+// the six axis directions ±a, its slab: the box that starts at q and reaches h along ±a, with
+// the cross-section of q's lattice cell (h × h around q). What a cone standing at q travelling
+// along ±a crosses first.
+//   Opacity: the effective density τ±a = −ln T / h, T the transmittance along ±a through the slab
+//     averaged over its cross-section. Leaves (h = 1): the slab holds halves of the 4 cells ahead
+//     of q, T = mean of (1 − α_a). Above: the slab is two child slabs long (at 2Q and 2Q ± 1
+//     along a, transmittances multiply), and across, the child slabs around 2Q are averaged with
+//     the ¼ ½ ¼ tent per axis (each child's cross-section overlaps the parent's by that much).
+//   Radiance: what reaches the slab's front face, averaged over its cross-section, S±a. Leaves:
+//     the mean over the 4 cells ahead of α_a · L · f, L the cell's radiance and f the share of it
+//     that leaves against ±a (its lit-side normal N: shaders/facing.glsl). Above: front to back
+//     along the slab, S = S_front + T_front · S_back per child column, tent-averaged across.
+//     Stored premultiplied as L·τ±a with L = S / (1 − T), the radiance of a uniform medium of the
+//     slab's opacity that sends S (so that trilinear interpolation between samples stays
+//     consistent with the interpolated density).
+// Light seen from the dark side of a wall is then what lies on that side, at every level.
+//
+// Reading: a cone at p reads, for each direction, the samples one spacing ahead of p along it
+// (so no sample behind p, whose slab could hold what lies behind the cone, is interpolated), and
+// combines the six with the weights of its spread of directions (shaders/cone_trace.comp).
 #include <cstdint>
 
 namespace vct {

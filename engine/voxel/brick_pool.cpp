@@ -23,54 +23,56 @@ PartialBricks createPartialBricks(const Octree& octree, int level) {
     return partial;
 }
 
-void allocateBrickPool(Octree& octree) {
+glm::ivec3 brickPoolLayout(std::uint32_t bricks, const char* what) {
     GLint max3D = 0;
     glGetIntegerv(GL_MAX_3D_TEXTURE_SIZE, &max3D);
     const int maxBricksPerAxis = max3D / 3;
-    const std::uint32_t bricks = std::max<std::uint32_t>(octree.nodeCount, 1);
-    // x and y as square as possible, z as needed.
+    bricks = std::max<std::uint32_t>(bricks, 1);
     const int side = std::min(maxBricksPerAxis, int(std::ceil(std::cbrt(double(bricks)))));
     const int z = int((bricks + std::uint64_t(side) * side - 1) / (std::uint64_t(side) * side));
     if (z > maxBricksPerAxis)
-        fail("the octree has ", bricks, " nodes, more bricks than a ", max3D, "³ texture holds; lower --voxel-levels");
-    octree.brickPoolBricks = {side, side, z};
-    auto pool = [&](const char* name) {
-        gl::Texture t = gl::createTexture(GL_TEXTURE_3D, name);
-        glTextureStorage3D(t.id(), 1, GL_RGBA16F, 3 * side, 3 * side, 3 * z);
-        for (GLenum wrap : {GL_TEXTURE_WRAP_S, GL_TEXTURE_WRAP_T, GL_TEXTURE_WRAP_R})
-            glTextureParameteri(t.id(), wrap, GL_CLAMP_TO_EDGE);
-        glTextureParameteri(t.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-        glTextureParameteri(t.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-        return t;
-    };
-    octree.brickAlbedo = pool("brick pool albedo/opacity");
-    octree.brickOpacity = pool("brick pool opacity by axis");
-    octree.rawValue = gl::createBuffer(GLsizeiptr(bricks) * 16, nullptr, 0, "node raw values");
-    octree.rawOpacity = gl::createBuffer(GLsizeiptr(bricks) * 16, nullptr, 0, "node raw opacity by axis");
-    gl::checkErrors(concat("allocating the brick pool (", 3 * side, "x", 3 * side, "x", 3 * z, " RGBA16F)"));
+        fail("the octree has ", bricks, " ", what, ", more bricks than a ", max3D, "³ texture holds; lower --voxel-levels");
+    return {side, side, z};
+}
+
+gl::Texture createBrickPool(glm::ivec3 bricksPerAxis, GLenum format, const char* label) {
+    gl::Texture t = gl::createTexture(GL_TEXTURE_3D, label);
+    const glm::ivec3 size = 3 * bricksPerAxis;
+    glTextureStorage3D(t.id(), 1, format, size.x, size.y, size.z);
+    for (GLenum wrap : {GL_TEXTURE_WRAP_S, GL_TEXTURE_WRAP_T, GL_TEXTURE_WRAP_R})
+        glTextureParameteri(t.id(), wrap, GL_CLAMP_TO_EDGE);
+    glTextureParameteri(t.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    glTextureParameteri(t.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    gl::checkErrors(concat("allocating the ", label, " (", size.x, "x", size.y, "x", size.z, ")"));
+    return t;
+}
+
+std::size_t brickPoolBytes(glm::ivec3 b, std::size_t bytesPerTexel) {
+    return std::size_t(b.x) * b.y * b.z * 27 * bytesPerTexel;
+}
+
+void allocateBrickPool(Octree& octree) {
+    octree.brickPoolBricks = brickPoolLayout(octree.nodeCount, "nodes");
+    octree.brickAlbedo = createBrickPool(octree.brickPoolBricks, GL_RGBA16F, "brick pool albedo/opacity");
+    octree.brickOpacityPlus = createBrickPool(octree.brickPoolBricks, GL_RGBA16F, "brick pool opacity +x +y +z");
+    octree.brickOpacityMinus = createBrickPool(octree.brickPoolBricks, GL_RGBA16F, "brick pool opacity -x -y -z");
+    octree.rawValue = gl::createBuffer(GLsizeiptr(std::max<std::uint32_t>(octree.nodeCount, 1)) * 16, nullptr, 0,
+                                       "node raw values");
 }
 
 void setBrickPoolUniforms(GLuint program, const Octree& octree) {
     gl::setUniform(program, "uBrickPoolBricks", octree.brickPoolBricks);
 }
 
-BrickCompletion::BrickCompletion(const std::vector<std::string>& defines)
-    : program_(gl::buildProgram({{GL_COMPUTE_SHADER, "bricks_complete.comp"}}, defines)) {}
+BrickCompletion::BrickCompletion() : program_(gl::buildProgram({{GL_COMPUTE_SHADER, "bricks_complete.comp"}})) {}
 
-gl::ComputeCall BrickCompletion::prepare(const Octree& octree, const PartialBricks& partial, GLuint pool) {
+void BrickCompletion::run(const Octree& octree, const PartialBricks& partial, GLuint pool) {
     gl::ComputeCall call(program_);
     octree.bind(call.program());
     setBrickPoolUniforms(call.program(), octree);
-    GLint format = GL_RGBA16F;  // the albedo pool; the radiance pool is RGBA32F (POOL_RGBA32F variant)
-    glGetTextureLevelParameteriv(pool, 0, GL_TEXTURE_INTERNAL_FORMAT, &format);
     call.uniform("uLevel", partial.level)
         .image(gl::IMAGE_PARTIAL_BRICKS, partial.texture.id(), GL_READ_ONLY, GL_RGBA32F)
-        .image(gl::IMAGE_BRICK_POOL, pool, GL_WRITE_ONLY, GLenum(format), true);
-    return call;
-}
-
-void BrickCompletion::run(const Octree& octree, const PartialBricks& partial, GLuint pool) {
-    prepare(octree, partial, pool)
+        .image(gl::IMAGE_BRICK_POOL, pool, GL_WRITE_ONLY, GL_RGBA16F, true)
         .dispatch1D(octree.levelCount[partial.level], 64, GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
 }
 

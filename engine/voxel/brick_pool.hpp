@@ -1,6 +1,7 @@
 #pragma once
-// The 3D-texture brick pool and the step both brick passes end with: turning one level's partial
-// bricks into complete samples in the pool (brick_layout.hpp, shaders/bricks_complete.comp).
+// The 3D-texture brick pools, and the step the linear brick filters end with: turning one
+// level's partial bricks into complete samples in a pool (brick_layout.hpp,
+// shaders/bricks_complete.comp).
 #include "gl/compute.hpp"
 #include "voxel/octree.hpp"
 
@@ -15,24 +16,22 @@ struct PartialBricks {
 
 PartialBricks createPartialBricks(const Octree& octree, int level);
 
-// The leaf level's partial bricks of the two geometry pools: albedo (brickAlbedo) and opacity by
-// axis (brickOpacity).
-struct LeafPartials {
-    PartialBricks albedo, opacity;
-};
+// Bricks per axis of a pool holding `bricks` bricks: x and y as square as possible, z as needed,
+// within GL_MAX_3D_TEXTURE_SIZE (fails naming `what` when they do not fit).
+glm::ivec3 brickPoolLayout(std::uint32_t bricks, const char* what);
+// A pool of that many bricks per axis (3 texels each), linear filtering, clamped at its edges.
+gl::Texture createBrickPool(glm::ivec3 bricksPerAxis, GLenum format, const char* label);
+std::size_t brickPoolBytes(glm::ivec3 bricksPerAxis, std::size_t bytesPerTexel);
 
-// Allocates octree.brickAlbedo and brickOpacity with one brick per node (levels 0..L−1), and
-// octree.rawValue and rawOpacity.
+// Allocates octree.brickAlbedo and the opacity pools with one brick per node (levels 0..L−1), and
+// octree.rawValue.
 void allocateBrickPool(Octree& octree);
 
 class BrickCompletion {
 public:
-    // `defines` select a variant of bricks_complete.comp (e.g. "WORK_LIST_BORDER 1").
-    explicit BrickCompletion(const std::vector<std::string>& defines = {});
-    // Completes every node of the partial's level into `pool`.
+    BrickCompletion();
+    // Completes every node of the partial's level into `pool` (RGBA16F).
     void run(const Octree& octree, const PartialBricks& partial, GLuint pool);
-    // Binds everything but the dispatch, for callers that dispatch over a list themselves.
-    gl::ComputeCall prepare(const Octree& octree, const PartialBricks& partial, GLuint pool);
 
 private:
     gl::Program program_;

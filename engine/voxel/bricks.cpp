@@ -1,38 +1,38 @@
 #include "voxel/bricks.hpp"
 
-#include "gl/compute.hpp"
-
 namespace vct {
 
 Bricks::Bricks()
     : albedoLeaf_(gl::buildProgram({{GL_COMPUTE_SHADER, "bricks_leaf.comp"}})),
-      opacityLeaf_(gl::buildProgram({{GL_COMPUTE_SHADER, "bricks_leaf.comp"}}, {"OPACITY 1"})) {}
+      opacityLeaf_(gl::buildProgram({{GL_COMPUTE_SHADER, "bricks_opacity.comp"}}, {"LEAF 1"})) {}
 
-LeafPartials Bricks::run(Octree& octree) {
+PartialBricks Bricks::run(Octree& octree) {
     allocateBrickPool(octree);
     const int leafLevel = octree.levels - 1;
-    LeafPartials partials{createPartialBricks(octree, leafLevel), createPartialBricks(octree, leafLevel)};
-    struct Channel {
-        const gl::Program& program;
-        GLuint cells, raw, pool;
-        const PartialBricks& partial;
-    };
-    const Channel channels[] = {
-        {albedoLeaf_, octree.cellAlbedo.id(), octree.rawValue.id(), octree.brickAlbedo.id(), partials.albedo},
-        {opacityLeaf_, octree.cellOpacity.id(), octree.rawOpacity.id(), octree.brickOpacity.id(), partials.opacity}};
-    for (const Channel& channel : channels) {
-        gl::ComputeCall call(channel.program);
-        octree.bind(call.program());
-        setBrickPoolUniforms(call.program(), octree);
-        call.uniform("uLevel", leafLevel)
-            .storage(gl::SSBO_CELL_VALUES, channel.cells)
-            .storage(gl::SSBO_RAW_VALUE, channel.raw)
-            .image(gl::IMAGE_PARTIAL_BRICKS, channel.partial.texture.id(), GL_WRITE_ONLY, GL_RGBA32F)
-            .dispatch1D(octree.levelCount[leafLevel], 64, GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);
-        completion_.run(octree, channel.partial, channel.pool);
-    }
+    PartialBricks albedo = createPartialBricks(octree, leafLevel);
+    gl::ComputeCall call(albedoLeaf_);
+    octree.bind(call.program());
+    setBrickPoolUniforms(call.program(), octree);
+    call.uniform("uLevel", leafLevel)
+        .storage(gl::SSBO_CELL_VALUES, octree.cellAlbedo)
+        .storage(gl::SSBO_RAW_VALUE, octree.rawValue)
+        .image(gl::IMAGE_PARTIAL_BRICKS, albedo.texture.id(), GL_WRITE_ONLY, GL_RGBA32F)
+        .dispatch1D(octree.levelCount[leafLevel], 64, GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);
+    completion_.run(octree, albedo, octree.brickAlbedo.id());
+    filterOpacity(opacityLeaf_, octree, leafLevel);
     gl::checkErrors("filling the leaf bricks");
-    return partials;
+    return albedo;
+}
+
+void filterOpacity(const gl::Program& program, const Octree& octree, int level) {
+    gl::ComputeCall call(program);
+    octree.bind(call.program());
+    setBrickPoolUniforms(call.program(), octree);
+    call.uniform("uLevel", level)
+        .storage(gl::SSBO_CELL_OPACITY, octree.cellOpacity)
+        .image(gl::IMAGE_OPACITY_PLUS, octree.brickOpacityPlus.id(), GL_READ_WRITE, GL_RGBA16F, true)
+        .image(gl::IMAGE_OPACITY_MINUS, octree.brickOpacityMinus.id(), GL_READ_WRITE, GL_RGBA16F, true)
+        .dispatch1D(octree.levelCount[level], 64, GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
 }
 
 }  // namespace vct

@@ -1,33 +1,29 @@
 #include "voxel/bricks_mip.hpp"
 
-#include "gl/compute.hpp"
+#include "voxel/bricks.hpp"
 
 namespace vct {
 
-BricksMip::BricksMip() : program_(gl::buildProgram({{GL_COMPUTE_SHADER, "bricks_mip.comp"}})) {}
+BricksMip::BricksMip()
+    : albedo_(gl::buildProgram({{GL_COMPUTE_SHADER, "bricks_mip.comp"}})),
+      opacity_(gl::buildProgram({{GL_COMPUTE_SHADER, "bricks_opacity.comp"}})) {}
 
-void BricksMip::run(const Octree& octree, LeafPartials leafPartials) {
-    struct Channel {
-        GLuint raw, pool;
-        PartialBricks child;
-    };
-    Channel channels[] = {{octree.rawValue.id(), octree.brickAlbedo.id(), std::move(leafPartials.albedo)},
-                          {octree.rawOpacity.id(), octree.brickOpacity.id(), std::move(leafPartials.opacity)}};
-    for (Channel& channel : channels) {
-        // Only two levels of partial bricks are alive at a time: the level and its children.
-        for (int level = octree.levels - 2; level >= 0; --level) {
-            PartialBricks partial = createPartialBricks(octree, level);
-            gl::ComputeCall call(program_);
-            octree.bind(call.program());
-            setBrickPoolUniforms(call.program(), octree);
-            call.uniform("uLevel", level)
-                .storage(gl::SSBO_RAW_VALUE, channel.raw)
-                .image(gl::IMAGE_PARTIAL_BRICKS, partial.texture.id(), GL_WRITE_ONLY, GL_RGBA32F)
-                .image(gl::IMAGE_CHILD_PARTIAL_BRICKS, channel.child.texture.id(), GL_READ_ONLY, GL_RGBA32F)
-                .dispatch1D(octree.levelCount[level], 64, GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);
-            completion_.run(octree, partial, channel.pool);
-            channel.child = std::move(partial);
-        }
+void BricksMip::run(const Octree& octree, PartialBricks leafAlbedo) {
+    // Only two levels of partial bricks are alive at a time: the level and its children.
+    PartialBricks child = std::move(leafAlbedo);
+    for (int level = octree.levels - 2; level >= 0; --level) {
+        PartialBricks partial = createPartialBricks(octree, level);
+        gl::ComputeCall call(albedo_);
+        octree.bind(call.program());
+        setBrickPoolUniforms(call.program(), octree);
+        call.uniform("uLevel", level)
+            .storage(gl::SSBO_RAW_VALUE, octree.rawValue)
+            .image(gl::IMAGE_PARTIAL_BRICKS, partial.texture.id(), GL_WRITE_ONLY, GL_RGBA32F)
+            .image(gl::IMAGE_CHILD_PARTIAL_BRICKS, child.texture.id(), GL_READ_ONLY, GL_RGBA32F)
+            .dispatch1D(octree.levelCount[level], 64, GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);
+        completion_.run(octree, partial, octree.brickAlbedo.id());
+        child = std::move(partial);
+        filterOpacity(opacity_, octree, level);
     }
     gl::checkErrors("filtering bricks up the octree");
 }

@@ -1,6 +1,7 @@
 #pragma once
-// bricks_mip pass (DESIGN §4 pass 6): bricks of every coarser level, bottom-up, by the ¼ ½ ¼
-// tent over the children's partial bricks, then completed across node borders.
+// bricks_mip pass (DESIGN §4 pass 6): the bricks of every coarser level, bottom-up: albedo by the
+// ¼ ½ ¼ tent over the children's partial bricks, then completed across node borders; opacity by
+// transmittance over the level below (brick_layout.hpp).
 #include "voxel/brick_pool.hpp"
 
 namespace vct {
@@ -8,10 +9,10 @@ namespace vct {
 class BricksMip {
 public:
     BricksMip();
-    void run(const Octree& octree, LeafPartials leafPartials);
+    void run(const Octree& octree, PartialBricks leafAlbedo);
 
 private:
-    gl::Program program_;
+    gl::Program albedo_, opacity_;
     BrickCompletion completion_;
 };
 

@@ -1,12 +1,13 @@
 #include "voxel/octree.hpp"
 
 #include "gl/shader.hpp"
+#include "voxel/brick_pool.hpp"
 #include "gl/shader_interface.hpp"
 
 namespace vct {
 
 std::size_t Octree::brickPoolBytes() const {
-    return 2 * (std::size_t(brickPoolBricks.x) * brickPoolBricks.y * brickPoolBricks.z * 27 * 8 + std::size_t(nodeCount) * 16);
+    return 3 * vct::brickPoolBytes(brickPoolBricks, 8) + std::size_t(nodeCount) * 16;
 }
 
 std::size_t Octree::denseTextureBytes() const {

@@ -48,13 +48,15 @@ struct Octree {
     gl::Buffer cellOpacity;
     bool hasEmissive = false;
 
-    // Bricks: one 3³ brick per node (levels 0..L−1) in a 3D texture, brick index = node index.
-    gl::Texture brickAlbedo;  // RGBA16F, premultiplied (ρ·α, α), complete samples (brick_layout.hpp)
+    // Bricks: one 3³ brick per node (levels 0..L−1) in 3D textures, brick index = node index.
     glm::ivec3 brickPoolBricks{0};  // bricks per axis
-    gl::Buffer rawValue;            // vec4 per node: mean of (ρ·α, α) over its cells
-    // The same for the optical depth by axis (τx, τy, τz, τ) of cellOpacity: what cones block by.
-    gl::Texture brickOpacity;  // RGBA16F
-    gl::Buffer rawOpacity;
+    // Albedo, RGBA16F, premultiplied (ρ·τ, τ), linear filters (brick_layout.hpp); and the node's
+    // raw value, the mean of (ρ·τ, τ) over its cells: what the voxel view shows.
+    gl::Texture brickAlbedo;
+    gl::Buffer rawValue;
+    // Opacity, RGBA16F: the density of each sample's slab along +x, +y, +z (and their mean), and
+    // along −x, −y, −z (brick_layout.hpp, "Slabs"): what cones are blocked by.
+    gl::Texture brickOpacityPlus, brickOpacityMinus;
 
     std::uint32_t cellCount() const { return levelCount[levels]; }
     std::size_t nodePoolBytes() const { return std::size_t(totalCount) * 16; }

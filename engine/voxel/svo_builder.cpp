@@ -20,9 +20,9 @@ void SvoBuilder::leaves(const GpuScene& gpuScene) {
 
 void SvoBuilder::neighbours() { neighbours_.run(octree_); }
 
-void SvoBuilder::bricks() { leafPartials_ = bricks_.run(octree_); }
+void SvoBuilder::bricks() { leafAlbedo_ = bricks_.run(octree_); }
 
-void SvoBuilder::bricksMip() { bricksMip_.run(octree_, std::move(leafPartials_)); }
+void SvoBuilder::bricksMip() { bricksMip_.run(octree_, std::move(leafAlbedo_)); }
 
 VoxelMemoryReport SvoBuilder::memory() const {
     VoxelMemoryReport r;

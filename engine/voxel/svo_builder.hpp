@@ -50,7 +50,7 @@ private:
     Octree octree_;
     LeafStatistics leafStatistics_;
     VoxelGrid grid_;
-    LeafPartials leafPartials_;
+    PartialBricks leafAlbedo_;  // between the bricks and bricks_mip passes
 };
 
 std::string formatVoxelMemory(const VoxelMemoryReport& report);

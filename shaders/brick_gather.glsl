@@ -1,0 +1,55 @@
+// Gathering what a node's brick samples are made of, for the filters that are not linear
+// (opacity by transmittance, radiance by direction: brick_layout.hpp). A node's 3³ samples sit on
+// its corners, edge and face midpoints and centre; what lies around them belongs to the node's
+// children and to the children of the nodes beside it. gatherChildren() collects those children,
+// a 4×4×4 block per axis from the child slot −1 (the neighbour's last) to 2 (the next one's first).
+// Every node sharing a sample gathers the same values in the same order, so a shared sample is
+// bit-identical in every brick that holds it.
+// Requires voxel_common.glsl and octree.glsl.
+
+// The children around `node` (level uLevel): index (s.x+1) + 4(s.y+1) + 16(s.z+1) for child
+// slot s ∈ {−1,0,1,2}³ relative to the node's own children; NONE where there is none.
+void gatherChildren(uint node, out uint children[64]) {
+    ivec3 coord = ivec3(unpackCell(nodeCoord[node]));
+    int size = 1 << uLevel;
+    for (int o = 0; o < 27; ++o) {
+        ivec3 offset = ivec3(o % 3, (o / 3) % 3, o / 9) - 1;
+        ivec3 target = coord + offset;
+        uint around = NONE;
+        if (offset == ivec3(0)) around = node;
+        else if (all(greaterThanEqual(target, ivec3(0))) && all(lessThan(target, ivec3(size))))
+            around = findNode(uvec3(target), uLevel);
+        for (uint slot = 0u; slot < 8u; ++slot) {
+            ivec3 s = 2 * offset + ivec3(slot & 1u, (slot >> 1) & 1u, (slot >> 2) & 1u);
+            if (any(lessThan(s, ivec3(-1))) || any(greaterThan(s, ivec3(2)))) continue;
+            children[(s.x + 1) + 4 * (s.y + 1) + 16 * (s.z + 1)] = around == NONE ? NONE : childOf(around, slot);
+        }
+    }
+}
+
+// The child node holding child-lattice point p (child-lattice units from the node's minimum
+// corner, p ∈ [−1, 5]³; child slot s spans [2s, 2s + 2]) and p's sample in that child's brick.
+// A point on a child's boundary belongs to up to eight children, any of which holds its complete
+// value; they are tried in a fixed order. False when no child holds p (empty space).
+bool childSampleAt(const uint children[64], ivec3 p, out uint child, out ivec3 local) {
+    ivec3 s = ivec3(floor(vec3(p) * 0.5));
+    ivec3 onBoundary = ivec3(equal(p & 1, ivec3(0))) * ivec3(greaterThan(s, ivec3(-1)));  // may use s − 1
+    for (int k = 0; k < 8; ++k) {
+        ivec3 down = ivec3(k & 1, (k >> 1) & 1, (k >> 2) & 1);
+        if (any(greaterThan(down, onBoundary))) continue;
+        ivec3 slot = min(s - down, ivec3(2));
+        child = children[(slot.x + 1) + 4 * (slot.y + 1) + 16 * (slot.z + 1)];
+        if (child != NONE) {
+            local = p - 2 * slot;
+            return true;
+        }
+    }
+    return false;
+}
+
+// Transmittance is what a node's cross-section averages (brick_layout.hpp): the effective
+// density that gives transmittance T over a path of `length` voxels, capped like opticalDepth()
+// (and never below 0: a mean of transmittances 1 can round to just above 1).
+float densityFromTransmittance(float transmittance, float length) {
+    return clamp(-log(max(transmittance, 1e-30)) / length, 0.0, -log(1.0 - MAX_OPACITY));
+}

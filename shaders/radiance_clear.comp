@@ -1,0 +1,29 @@
+#version 450
+layout(local_size_x = 64) in;
+// radiance_leaves, first step: every brick sample of the six radiance pools starts as no light over the
+// geometry's density along its direction, (0, 0, 0, τ±a) (brick_layout.hpp, "Slabs"), so that a
+// cone reads one pool per direction and finds the opacity of unlit geometry there too. The
+// nodes beside light are written again by radiance_leaves and radiance_mip.
+#include "voxel_common.glsl"
+#include "octree.glsl"
+#include "bricks_common.glsl"
+
+layout(binding = TEXTURE_OPACITY_PLUS) uniform sampler3D uOpacityPlus;
+layout(binding = TEXTURE_OPACITY_MINUS) uniform sampler3D uOpacityMinus;
+layout(rgba32f, binding = IMAGE_DIRECTIONAL_RADIANCE) uniform writeonly image3D uDirectional[6];
+
+uniform uint uNodeCount;
+
+void main() {
+    uint node = linearInvocation();
+    if (node >= uNodeCount) return;
+    ivec3 origin = brickOrigin(node);
+    for (int s = 0; s < 27; ++s) {
+        ivec3 texel = origin + ivec3(s % 3, (s / 3) % 3, s / 9);
+        vec3 plus = texelFetch(uOpacityPlus, texel, 0).xyz, minus = texelFetch(uOpacityMinus, texel, 0).xyz;
+        for (int a = 0; a < 3; ++a) {
+            imageStore(uDirectional[2 * a], texel, vec4(0.0, 0.0, 0.0, plus[a]));
+            imageStore(uDirectional[2 * a + 1], texel, vec4(0.0, 0.0, 0.0, minus[a]));
+        }
+    }
+}
