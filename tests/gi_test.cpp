@@ -77,19 +77,6 @@ std::filesystem::path writeSolidShell(const std::filesystem::path& dir, const st
     return dir / "shell.obj";
 }
 
-// Renders one frame of `scene` (with `lights`) in-process at 64³ voxels and returns the renderer,
-// whose octree and radiance volume the caller reads back.
-std::unique_ptr<Renderer> renderRadiance(Scene& scene, const std::vector<Light>& lights) {
-    scene.lights = lights;
-    RenderSettings settings;
-    settings.width = 16;
-    settings.height = 16;
-    settings.voxelLevels = 6;
-    settings.lightViewResolution = 2048;
-    auto renderer = std::make_unique<Renderer>(scene, settings);
-    renderer->renderFrame(scene.cameras[0]);
-    return renderer;
-}
 
 }  // namespace
 
@@ -189,7 +176,7 @@ TEST(Gi, InjectionStoresLambertRadianceAndHalfForHalfShadowedVoxels) {
         sun.direction = glm::dvec3(std::sin(theta), -std::cos(theta), 0.0);
         sun.irradiance = E;
         auto context = gl::createContext(gl::Backend::OSMesa);
-        const auto renderer = renderRadiance(scene, {sun});
+        const auto renderer = test::renderRadianceFrame(scene, {sun}, 6, 2048);
         const Octree& octree = renderer->octree()->octree();
         const auto radiance = test::readBuffer<glm::vec4>(renderer->radiance()->cellRadiance, octree.cellCount());
         const auto coords = test::readBuffer<std::uint32_t>(octree.coord, octree.totalCount);
@@ -228,7 +215,7 @@ TEST(Gi, HalfShadowedVoxelsStoreHalf) {
     sun.direction = {0.0, -1.0, 0.0};
     sun.irradiance = 4.0;
     auto context = gl::createContext(gl::Backend::OSMesa);
-    const auto renderer = renderRadiance(scene, {sun});
+    const auto renderer = test::renderRadianceFrame(scene, {sun}, 6, 2048);
     const Octree& octree = renderer->octree()->octree();
     const auto radiance = test::readBuffer<glm::vec4>(renderer->radiance()->cellRadiance, octree.cellCount());
     const auto coords = test::readBuffer<std::uint32_t>(octree.coord, octree.totalCount);

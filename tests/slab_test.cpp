@@ -152,19 +152,6 @@ bool onTheWall(glm::ivec3 p, int h) {
     return inside(p.y) && inside(p.z);
 }
 
-// One frame in-process (as gi_test.cpp's renderRadiance), with a 512² light view: about 60 photons
-// per voxel of a wall facing the sun, enough for the radiance volume and fast on llvmpipe.
-std::unique_ptr<Renderer> renderRadiance(Scene& scene, const std::vector<Light>& lights, int levels) {
-    scene.lights = lights;
-    RenderSettings settings;
-    settings.width = 16;
-    settings.height = 16;
-    settings.voxelLevels = levels;
-    settings.lightViewResolution = 512;
-    auto renderer = std::make_unique<Renderer>(scene, settings);
-    renderer->renderFrame(scene.cameras[0]);
-    return renderer;
-}
 
 }  // namespace
 
@@ -287,7 +274,7 @@ TEST(Slabs, RadianceSeenFromTheDarkSideOfAWallIsDark) {
     sun.direction = glm::dvec3(std::cos(theta), -std::sin(theta), 0.0);
     sun.irradiance = E;
     auto context = gl::createContext(gl::Backend::OSMesa);
-    const auto renderer = renderRadiance(scene, {sun}, kWallLevels);
+    const auto renderer = test::renderRadianceFrame(scene, {sun}, kWallLevels, 512);
     const Octree& octree = renderer->octree()->octree();
     const RadianceVolume& volume = *renderer->radiance();
     const auto coords = readBuffer<std::uint32_t>(octree.coord, octree.totalCount);
