@@ -76,11 +76,11 @@ void beginCone(vec3 axis, float tanHalfAngle) {
 // read one spacing ahead of p along ±a (in the node beside it, past the brick's face), so the
 // ones interpolated start at p or beyond: a sample behind p would report what lies behind the
 // cone, e.g. the lit top of a thin roof to a cone passing under it.
-// With bricks, trilinear inside the bricks; without, the samples at the node's centre (one value
-// per node and direction).
+// With bricks, trilinear inside the bricks; without (`--no-bricks`), the nearest sample: the
+// unfiltered data, for comparison.
 vec4 sampleNode(uint node, int level, vec3 p) {
     float size = float(1 << (uLevels - level));
-    vec3 local = uUseBricks != 0 ? clamp((p - vec3(unpackCell(nodeCoord[node])) * size) / size, 0.0, 1.0) : vec3(0.5);
+    vec3 local = clamp((p - vec3(unpackCell(nodeCoord[node])) * size) / size, 0.0, 1.0);
     vec3 inBrick = local * 2.0;  // in sample spacings
     vec3 poolSize = vec3(textureSize(uDirectional[0], 0));
     vec4 value = vec4(0.0);
@@ -97,7 +97,8 @@ vec4 sampleNode(uint node, int level, vec3 p) {
             at[a] += along ? -2.0 : 2.0;
         }
         if (holder == NONE) continue;  // empty space ahead
-        value += weight * texture(uDirectional[i], (vec3(brickOrigin(holder)) + 0.5 + at) / poolSize);
+        vec3 sampleAt = uUseBricks != 0 ? at : round(at);
+        value += weight * texture(uDirectional[i], (vec3(brickOrigin(holder)) + 0.5 + sampleAt) / poolSize);
     }
     return value;
 }

@@ -102,7 +102,7 @@ std::vector<std::pair<std::string, std::vector<std::uint8_t>>> imageSnapshot(con
     settings.bricks = false;
     renderer.setSettings(settings);
     renderer.renderFrame(scene.cameras[0]);
-    images.emplace_back("aov final, raw node values", bytesOf(renderer.readHdr()));
+    images.emplace_back("aov final, no bricks", bytesOf(renderer.readHdr()));
     settings.bricks = true;
     for (ViewMode view : {ViewMode::Voxels, ViewMode::Radiance}) {
         settings.view = view;

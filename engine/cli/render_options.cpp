@@ -36,7 +36,7 @@ void addRenderSettingsOptions(CLI::App& command, RenderSettingsOptions& o) {
         ->capture_default_str();
     command.add_option("--voxel-level", o.voxelViewLevel,
                        "octree level shown by the voxel views (1..L; default L, the voxels themselves)");
-    command.add_flag("--no-bricks", o.noBricks, "raw node values instead of filtered bricks (cones and voxel views)");
+    command.add_flag("--no-bricks", o.noBricks, "unfiltered voxel data: cones read the nearest brick sample, voxel views each node's mean (instead of trilinear in the bricks)");
 }
 
 RenderSettings renderSettingsFromOptions(const RenderSettingsOptions& o, const Scene& scene) {

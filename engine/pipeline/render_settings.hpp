@@ -26,7 +26,7 @@ struct RenderSettings {
     ConeSettings cones;
     int voxelLevels = 8;     // octree resolution 2^voxelLevels
     int voxelViewLevel = 0;  // level shown by the voxel views; 0 = voxelLevels (the voxels)
-    bool bricks = true;      // filtered bricks (else raw node values) in cone tracing and voxel views
+    bool bricks = true;      // trilinear in the bricks (else nearest sample for cones, raw node values for voxel views)
     bool fullFrames = false;  // every pass every frame, as if the geometry changed (benchmarks)
 
     bool operator==(const RenderSettings&) const = default;

@@ -15,7 +15,7 @@ struct ConeSettings {
     float offset = 1.5f;        // start offset along the normal, voxels
     float lift = 0.0f;          // extra normal offset per unit of cone diameter
     float maxDistance = 0.0f;   // voxels; 0 = through the whole volume
-    bool bricks = true;         // false: raw node values, no interpolation (`--no-bricks`)
+    bool bricks = true;         // false: the nearest brick sample, no interpolation (`--no-bricks`)
 
     bool operator==(const ConeSettings&) const = default;
 };

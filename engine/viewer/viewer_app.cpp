@@ -176,7 +176,7 @@ private:
         switch (action) {
             case Action::None: return false;
             case Action::ToggleGi: s.gi = !s.gi; status(s.gi ? "GI on" : "GI off"); break;
-            case Action::ToggleBricks: s.bricks = !s.bricks; status(s.bricks ? "filtered bricks" : "raw node values"); break;
+            case Action::ToggleBricks: s.bricks = !s.bricks; status(s.bricks ? "filtered bricks" : "unfiltered (nearest sample, raw node values)"); break;
             case Action::TogglePhotons: s.photons = !s.photons; status(s.photons ? "photons on" : "photons off"); break;
             case Action::ToggleVoxelView:
                 s.view = s.view == ViewMode::Voxels ? ViewMode::Lit : ViewMode::Voxels;
