@@ -9,6 +9,7 @@ layout(local_size_x = 8, local_size_y = 8) in;
 #include "octree.glsl"
 #include "bricks_common.glsl"
 #include "octree_march.glsl"
+#include "cone_spread.glsl"
 
 layout(binding = TEXTURE_GBUFFER_NORMAL) uniform sampler2D uNormal;
 layout(binding = TEXTURE_GBUFFER_POSITION) uniform sampler2D uPosition;
@@ -39,36 +40,8 @@ uniform int uUseBricks;
 uniform vec3 uVoxelOrigin;
 uniform float uVoxelScale;
 
-// The cone being traced, as the samples see it. A cone is a bundle of directions d around its
-// axis, not one direction: a floor edge-on to the axis of a horizontal cone still fills the lower
-// part of its footprint. A surface's opacity along d is its area projected along d, the sum over
-// the axes of its area projected along a times |d_a|; averaged over the cone's directions, axis a
-// counts E[|d_a|], split into what travels along +a, E[max(d_a, 0)], and along −a. The spread is
-// modelled as normal: d_a has mean c_a·E[cos φ] and variance (1 − c_a²)·E[sin² φ]/2 (φ: angle
-// from the axis c, uniform over the cone's cap).
-vec3 coneAlongPlus, coneAlongMinus;  // E[max(±d_a, 0)] per axis
-float coneCosMean, coneSin2Mean;     // E[cos φ], E[sin² φ]
-
-// Standard normal distribution function (logistic approximation, within 0.01).
-float normalCdf(float z) { return 1.0 / (1.0 + exp(-1.702 * z)); }
-// E[max(x, 0)] for x normal with mean mu and deviation sigma.
-float positivePartMean(float mu, float sigma) {
-    if (sigma < 1e-4) return max(mu, 0.0);
-    float z = mu / sigma;
-    return mu * normalCdf(z) + sigma * 0.39894228 * exp(-0.5 * z * z);
-}
-
-void beginCone(vec3 axis, float tanHalfAngle) {
-    float cosHalfAngle = 1.0 / sqrt(1.0 + tanHalfAngle * tanHalfAngle);
-    coneCosMean = 0.5 * (1.0 + cosHalfAngle);
-    coneSin2Mean = (2.0 / 3.0 - cosHalfAngle + cosHalfAngle * cosHalfAngle * cosHalfAngle / 3.0) / max(1.0 - cosHalfAngle, 1e-6);
-    for (int a = 0; a < 3; ++a) {
-        float mu = axis[a] * coneCosMean;
-        float sigma = sqrt(max((1.0 - axis[a] * axis[a]) * coneSin2Mean * 0.5, 0.0));
-        coneAlongPlus[a] = positivePartMean(mu, sigma);
-        coneAlongMinus[a] = max(coneAlongPlus[a] - mu, 0.0);  // ≥ 0 despite the approximate Φ
-    }
-}
+// The cone being traced: E[max(±d_a, 0)] per axis over its directions (cone_spread.glsl).
+vec3 coneAlongPlus, coneAlongMinus;
 
 // What the cone sees of node `node` (level `level`) at p, voxel space: (L·τ, τ) with
 // τ = Σ over the six directions of their weight (coneAlong*) times their slab's density.
@@ -219,7 +192,7 @@ void main() {
     for (int c = 0; c < uConeCount; ++c) {
         vec3 d = uConeDirection[c];
         vec3 direction = normalize(d.x * tangent + d.y * bitangent + d.z * normal);
-        beginCone(direction, uConeTanHalfAngle[c]);
+        coneSpread(direction, uConeTanHalfAngle[c], coneAlongPlus, coneAlongMinus);
         vec4 cone = traceCone(origin, normal, direction, uConeTanHalfAngle[c]);
         irradiance += uConeWeight[c] * cone.rgb;
         occlusion += uConeWeight[c] * cone.a;
