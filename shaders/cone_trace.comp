@@ -90,7 +90,8 @@ vec4 sampleNode(uint node, int level, uint finer, vec3 p) {
         int a = i >> 1;
         float alignment = (i & 1) == 0 ? coneAxis[a] : -coneAxis[a];
         bool lateral = alignment < LATERAL_ALIGNMENT && finer != NONE;
-        value += lateral ? sampleDirection(finer, level + 1, p, i) : sampleDirection(node, level, p, i);
+        // One call with the node chosen first: a call in each branch would run both on SIMD.
+        value += sampleDirection(lateral ? finer : node, lateral ? level + 1 : level, p, i);
     }
     return value;
 }
