@@ -22,7 +22,7 @@ namespace {
 // Measured (docs/benchmark.md) and the bounds asserted, with room for noise.
 constexpr double kLeakLargestPixel = 0.04;                 // of the lit floor's radiance
 constexpr double kCornellMean[2] = {0.7, 0.95}, kCornellCells[2] = {0.3, 1.35};
-constexpr double kSponzaMean[2] = {0.7, 1.0}, kSponzaCells[2] = {0.4, 1.3};
+constexpr double kSponzaMean[2] = {0.75, 1.0}, kSponzaCells[2] = {0.6, 1.3};
 
 ImageF subtract(const ImageF& a, const ImageF& b) {
     ImageF d = a;
