@@ -99,10 +99,7 @@ Brick completeBrick(glm::uvec3 node, int level, const std::map<std::uint32_t, Br
 }  // namespace
 
 CpuBricks computeCpuBricks(const std::map<std::uint32_t, glm::dvec4>& cellValues, int levels) {
-    std::vector<std::uint32_t> cells;
-    cells.reserve(cellValues.size());
-    for (const auto& [cell, value] : cellValues) cells.push_back(cell);
-    const CpuOctree tree = buildCpuOctree(cells, levels);  // validates levels and cells
+    const CpuOctree tree = buildCpuOctree(cellValues, levels);  // validates levels and cells
 
     CpuBricks bricks;
     bricks.levels = levels;

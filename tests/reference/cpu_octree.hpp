@@ -8,6 +8,7 @@
 // exists iff at least one occupied cell lies inside it, so an empty cell set has no nodes at all
 // (not even a root); any non-empty set has nodes[0] = {0}.
 #include <cstdint>
+#include <map>
 #include <optional>
 #include <vector>
 
@@ -34,5 +35,14 @@ struct CpuOctree {
 
 // Throws std::invalid_argument for levels outside 1..10 or a cell outside [0, 2^levels)³.
 CpuOctree buildCpuOctree(const std::vector<std::uint32_t>& cells, int levels);
+
+// The octree of the cells that carry a value (the keys of a per-cell map).
+template <class Value>
+CpuOctree buildCpuOctree(const std::map<std::uint32_t, Value>& cellValues, int levels) {
+    std::vector<std::uint32_t> cells;
+    cells.reserve(cellValues.size());
+    for (const auto& entry : cellValues) cells.push_back(entry.first);
+    return buildCpuOctree(cells, levels);
+}
 
 }  // namespace vct::reference

@@ -95,10 +95,7 @@ SlabDensities parentPoint(glm::ivec3 Q, const std::map<std::uint64_t, SlabDensit
 }  // namespace
 
 CpuSlabOpacity computeCpuSlabOpacity(const std::map<std::uint32_t, glm::dvec3>& cellOpacity, int levels) {
-    std::vector<std::uint32_t> cells;
-    cells.reserve(cellOpacity.size());
-    for (const auto& [cell, alpha] : cellOpacity) cells.push_back(cell);
-    const CpuOctree tree = buildCpuOctree(cells, levels);  // validates levels and cells
+    const CpuOctree tree = buildCpuOctree(cellOpacity, levels);  // validates levels and cells
 
     CpuSlabOpacity result;
     result.levels = levels;
