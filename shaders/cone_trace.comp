@@ -51,19 +51,24 @@ vec3 coneAlongPlus, coneAlongMinus;
 // brings the image means closer still but raises the RMSE (more of the cone read finer).
 const float LATERAL_ALIGNMENT = 0.5;
 
-// What node `node` (level `level`) shows at p, voxel space, along direction i (+a for i = 2a,
-// −a for i = 2a + 1): the cone's share along it × (L·τ, τ) of its slab pool.
+// Where p lies in the brick of node `node` (level `level`), in sample spacings (0..2 per axis).
+vec3 brickPosition(uint node, int level, vec3 p) {
+    float size = float(1 << (uLevels - level));
+    return clamp((p - vec3(unpackCell(nodeCoord[node])) * size) / size, 0.0, 1.0) * 2.0;
+}
+
+// What node `node` shows at `inBrick` (brickPosition) along direction i (+a for i = 2a, −a for
+// i = 2a + 1): the cone's share along it × (L·τ, τ) of its slab pool.
 // A slab along ±a starts at its sample and reaches one sample spacing ahead. The samples are
 // read one spacing ahead of p along ±a (in the node beside it, past the brick's face), so the
 // ones interpolated start at p or beyond: a sample behind p would report what lies behind the
 // cone, e.g. the lit top of a thin roof to a cone passing under it.
 // With bricks, trilinear inside the bricks; without (`--no-bricks`), the nearest sample: the
 // unfiltered data, for comparison.
-vec4 sampleDirection(uint node, int level, vec3 p, int i) {
+vec4 sampleDirection(uint node, vec3 inBrick, int i) {
     int a = i >> 1;
     bool along = (i & 1) == 0;
-    float size = float(1 << (uLevels - level));
-    vec3 at = clamp((p - vec3(unpackCell(nodeCoord[node])) * size) / size, 0.0, 1.0) * 2.0;  // in sample spacings
+    vec3 at = inBrick;
     at[a] += along ? 1.0 : -1.0;
     uint holder = node;
     if (at[a] > 2.0 || at[a] < 0.0) {
@@ -84,6 +89,8 @@ vec4 sampleDirection(uint node, int level, vec3 p, int i) {
 // below it). Directions more than 60° from the axis are therefore read from `finer`, the node
 // one level finer at p, whose slabs stay within the footprint (NONE: from `node`).
 vec4 sampleNode(uint node, int level, uint finer, vec3 p) {
+    vec3 inNode = brickPosition(node, level, p);
+    vec3 inFiner = finer != NONE ? brickPosition(finer, level + 1, p) : inNode;
     vec4 value = vec4(0.0);
     // Every direction in turn, so that which pool is read is the same in every invocation.
     for (int i = 0; i < 6; ++i) {
@@ -91,7 +98,7 @@ vec4 sampleNode(uint node, int level, uint finer, vec3 p) {
         float alignment = (i & 1) == 0 ? coneAxis[a] : -coneAxis[a];
         bool lateral = alignment < LATERAL_ALIGNMENT && finer != NONE;
         // One call with the node chosen first: a call in each branch would run both on SIMD.
-        value += sampleDirection(lateral ? finer : node, lateral ? level + 1 : level, p, i);
+        value += sampleDirection(lateral ? finer : node, lateral ? inFiner : inNode, i);
     }
     return value;
 }
