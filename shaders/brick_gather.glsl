@@ -27,6 +27,28 @@ void gatherChildren(uint node, out uint children[64]) {
     }
 }
 
+// At the leaf level (children = voxels): the index in gatherChildren's block of one of the 4
+// voxels that the slab of sample q along +a (plus) or −a holds (brick_layout.hpp, "Slabs"),
+// column 0..3 across the slab.
+int leafSlabVoxel(ivec3 q, int a, bool plus, int column) {
+    ivec3 cell = q - 1;
+    cell[a] += plus ? 1 : 0;  // +a: the voxel after q, −a: the one before
+    cell[(a + 1) % 3] += column & 1;
+    cell[(a + 2) % 3] += column >> 1;
+    return (cell.x + 1) + 4 * (cell.y + 1) + 16 * (cell.z + 1);
+}
+
+// In a 3×3×3 block of child samples around 2Q, index (d + 1) · (1, 3, 9): the index step along
+// axis a, and the index of the sample at offset (db, dc) across axis a (d_a = 0), the front of a
+// child column along a.
+int aroundStride(int a) { return a == 0 ? 1 : (a == 1 ? 3 : 9); }
+int aroundAcross(int a, int db, int dc) {
+    ivec3 d = ivec3(0);
+    d[(a + 1) % 3] = db;
+    d[(a + 2) % 3] = dc;
+    return (d.x + 1) + 3 * (d.y + 1) + 9 * (d.z + 1);
+}
+
 // The child node holding child-lattice point p (child-lattice units from the node's minimum
 // corner, p ∈ [−1, 5]³; child slot s spans [2s, 2s + 2]) and p's sample in that child's brick.
 // A point on a child's boundary belongs to up to eight children, any of which holds its complete

@@ -44,14 +44,9 @@ void main() {
                 vec3 transmittance[2] = vec3[2](vec3(0.0), vec3(0.0));  // along +a, along −a
 #ifdef LEAF
                 for (int a = 0; a < 3; ++a) {
-                    int b = (a + 1) % 3, c = (a + 2) % 3;
                     for (int side = 0; side < 2; ++side)
                         for (int column = 0; column < 4; ++column) {
-                            ivec3 cell = q - 1;
-                            cell[a] += side == 0 ? 1 : 0;  // +a: the voxel after q, −a: the one before
-                            cell[b] += column & 1;
-                            cell[c] += column >> 1;
-                            uint child = children[(cell.x + 1) + 4 * (cell.y + 1) + 16 * (cell.z + 1)];
+                            uint child = children[leafSlabVoxel(q, a, side == 0, column)];
                             float alpha = child == NONE ? 0.0 : unpackUnorm4x8(cellOpacity[child - uLevelStart[uLevels]])[a];
                             transmittance[side][a] += 0.25 * (1.0 - min(alpha, MAX_OPACITY));
                         }
@@ -74,15 +69,11 @@ void main() {
                     }
                 }
                 for (int a = 0; a < 3; ++a) {
-                    int b = (a + 1) % 3, c = (a + 2) % 3;
                     for (int db = -1; db <= 1; ++db)
                         for (int dc = -1; dc <= 1; ++dc) {
-                            ivec3 d0 = ivec3(0), d1 = ivec3(0);
-                            d0[b] = d1[b] = db;
-                            d0[c] = d1[c] = dc;
-                            int at = (d0.x + 1) + 3 * (d0.y + 1) + 9 * (d0.z + 1);
-                            int next = at + (a == 0 ? 1 : (a == 1 ? 3 : 9));
-                            int previous = at - (a == 0 ? 1 : (a == 1 ? 3 : 9));
+                            int at = aroundAcross(a, db, dc);
+                            int next = at + aroundStride(a);
+                            int previous = at - aroundStride(a);
                             float weight = w[db + 1] * w[dc + 1];
                             transmittance[0][a] += weight * plus[at][a] * plus[next][a];
                             transmittance[1][a] += weight * minus[at][a] * minus[previous][a];

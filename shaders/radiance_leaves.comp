@@ -51,15 +51,11 @@ void main() {
                 ivec3 q = ivec3(x, j, k);
                 vec4 tauPlus = texelFetch(uOpacityPlus, origin + q, 0), tauMinus = texelFetch(uOpacityMinus, origin + q, 0);
                 for (int i = 0; i < 6; ++i) {
-                    int a = i >> 1, b = (a + 1) % 3, c = (a + 2) % 3;
+                    int a = i >> 1;
                     vec3 seen = vec3(0.0);
                     float transmittance = 0.0;
                     for (int column = 0; column < 4; ++column) {
-                        ivec3 cell = q - 1;
-                        cell[a] += (i & 1) == 0 ? 1 : 0;  // +a: the voxel after q, −a: the one before
-                        cell[b] += column & 1;
-                        cell[c] += column >> 1;
-                        int v = (cell.x + 1) + 4 * (cell.y + 1) + 16 * (cell.z + 1);
+                        int v = leafSlabVoxel(q, a, (i & 1) == 0, column);
                         seen += 0.25 * sent[v][i];
                         transmittance += 0.25 * (1.0 - opacity[v][a]);
                     }

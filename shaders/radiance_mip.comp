@@ -51,17 +51,13 @@ void main() {
                 }
                 vec4 tauPlus = texelFetch(uOpacityPlus, origin + q, 0), tauMinus = texelFetch(uOpacityMinus, origin + q, 0);
                 for (int i = 0; i < 6; ++i) {
-                    int a = i >> 1, b = (a + 1) % 3, c = (a + 2) % 3;
-                    int stride = a == 0 ? 1 : (a == 1 ? 3 : 9);
-                    int ahead = (i & 1) == 0 ? stride : -stride;
+                    int a = i >> 1;
+                    int ahead = (i & 1) == 0 ? aroundStride(a) : -aroundStride(a);
                     vec3 total = vec3(0.0);
                     float meanTransmittance = 0.0;
                     for (int db = -1; db <= 1; ++db)
                         for (int dc = -1; dc <= 1; ++dc) {
-                            ivec3 d = ivec3(0);
-                            d[b] = db;
-                            d[c] = dc;
-                            int front = (d.x + 1) + 3 * (d.y + 1) + 9 * (d.z + 1);
+                            int front = aroundAcross(a, db, dc);
                             int back = front + ahead;
                             float weight = w[db + 1] * w[dc + 1];
                             total += weight * (seen[front][i] + transmittance[front][i] * seen[back][i]);
