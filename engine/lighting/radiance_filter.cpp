@@ -8,11 +8,8 @@ constexpr GLbitfield kBarrier =
     GL_SHADER_STORAGE_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT;
 
 gl::ComputeCall over(const gl::Program& program, const Octree& octree, const RadianceVolume& volume, int level) {
-    gl::ComputeCall call(program);
-    octree.bind(call.program());
-    setBrickPoolUniforms(call.program(), octree);
+    gl::ComputeCall call = brickLevelCall(program, octree, level);
     bindRadianceVolume(volume);
-    call.uniform("uLevel", level);
     return call;
 }
 }  // namespace

@@ -64,13 +64,18 @@ void setBrickPoolUniforms(GLuint program, const Octree& octree) {
     gl::setUniform(program, "uBrickPoolBricks", octree.brickPoolBricks);
 }
 
+gl::ComputeCall brickLevelCall(const gl::Program& program, const Octree& octree, int level) {
+    gl::ComputeCall call(program);
+    octree.bind(call.program());
+    setBrickPoolUniforms(call.program(), octree);
+    call.uniform("uLevel", level);
+    return call;
+}
+
 BrickCompletion::BrickCompletion() : program_(gl::buildProgram({{GL_COMPUTE_SHADER, "bricks_complete.comp"}})) {}
 
 void BrickCompletion::run(const Octree& octree, const PartialBricks& partial, GLuint pool) {
-    gl::ComputeCall call(program_);
-    octree.bind(call.program());
-    setBrickPoolUniforms(call.program(), octree);
-    call.uniform("uLevel", partial.level)
+    brickLevelCall(program_, octree, partial.level)
         .image(gl::IMAGE_PARTIAL_BRICKS, partial.texture.id(), GL_READ_ONLY, GL_RGBA32F)
         .image(gl::IMAGE_BRICK_POOL, pool, GL_WRITE_ONLY, GL_RGBA16F, true)
         .dispatch1D(octree.levelCount[partial.level], 64, GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);

@@ -39,4 +39,8 @@ private:
 
 void setBrickPoolUniforms(GLuint program, const Octree& octree);
 
+// A compute call of a pass over one octree level's bricks: `program` in use, the octree bound,
+// the brick pool layout and uLevel set; the caller adds its buffers and images and dispatches.
+gl::ComputeCall brickLevelCall(const gl::Program& program, const Octree& octree, int level);
+
 }  // namespace vct

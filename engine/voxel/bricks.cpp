@@ -10,10 +10,7 @@ PartialBricks Bricks::run(Octree& octree) {
     allocateBrickPool(octree);
     const int leafLevel = octree.levels - 1;
     PartialBricks albedo = createPartialBricks(octree, leafLevel);
-    gl::ComputeCall call(albedoLeaf_);
-    octree.bind(call.program());
-    setBrickPoolUniforms(call.program(), octree);
-    call.uniform("uLevel", leafLevel)
+    brickLevelCall(albedoLeaf_, octree, leafLevel)
         .storage(gl::SSBO_CELL_VALUES, octree.cellAlbedo)
         .storage(gl::SSBO_RAW_VALUE, octree.rawValue)
         .image(gl::IMAGE_PARTIAL_BRICKS, albedo.texture.id(), GL_WRITE_ONLY, GL_RGBA32F)
@@ -25,10 +22,7 @@ PartialBricks Bricks::run(Octree& octree) {
 }
 
 void filterOpacity(const gl::Program& program, const Octree& octree, int level) {
-    gl::ComputeCall call(program);
-    octree.bind(call.program());
-    setBrickPoolUniforms(call.program(), octree);
-    call.uniform("uLevel", level)
+    brickLevelCall(program, octree, level)
         .storage(gl::SSBO_CELL_OPACITY, octree.cellOpacity)
         .image(gl::IMAGE_OPACITY_PLUS, octree.brickOpacityPlus.id(), GL_READ_WRITE, GL_RGBA16F, true)
         .image(gl::IMAGE_OPACITY_MINUS, octree.brickOpacityMinus.id(), GL_READ_WRITE, GL_RGBA16F, true)

@@ -13,10 +13,7 @@ void BricksMip::run(const Octree& octree, PartialBricks leafAlbedo) {
     PartialBricks child = std::move(leafAlbedo);
     for (int level = octree.levels - 2; level >= 0; --level) {
         PartialBricks partial = createPartialBricks(octree, level);
-        gl::ComputeCall call(albedo_);
-        octree.bind(call.program());
-        setBrickPoolUniforms(call.program(), octree);
-        call.uniform("uLevel", level)
+        brickLevelCall(albedo_, octree, level)
             .storage(gl::SSBO_RAW_VALUE, octree.rawValue)
             .image(gl::IMAGE_PARTIAL_BRICKS, partial.texture.id(), GL_WRITE_ONLY, GL_RGBA32F)
             .image(gl::IMAGE_CHILD_PARTIAL_BRICKS, child.texture.id(), GL_READ_ONLY, GL_RGBA32F)
