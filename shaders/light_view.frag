@@ -21,14 +21,15 @@ void main() {
     float distanceToLight;
     vec3 incident = incidentIrradiance(uLight, vPosition, toLight, distanceToLight);
     // Flux through one texel: E·A for a parallel beam (a tilted surface covers more area but
-    // receives E·cosθ, so the texel's flux does not depend on θ); I·falloff·ω for a spot, where
-    // the texel's solid angle shrinks as cos³ away from the axis. Stored relative to the light's
-    // largest texel flux (E or I × colour × footprint, LightViewMap::maxTexelFlux), computed
-    // without the light's magnitude so that nothing overflows or underflows float.
+    // receives E·cosθ, so the texel's flux does not depend on θ); I·weight·ω for a spot or a point
+    // light's cube face, where the texel's solid angle shrinks as cos³ away from the view's axis.
+    // Stored relative to the light's largest texel flux (E or I × colour × footprint,
+    // LightViewMap::maxTexelFlux), computed without the light's magnitude so that nothing
+    // overflows or underflows float.
     vec3 flux = uLight.radiometric * uInverseQuantity;  // the tint, largest component 1
     if (uLight.type != LIGHT_DIRECTIONAL) {
         float cosAxis = max(dot(-toLight, uLight.direction), 0.0);
-        flux *= spotFalloff(cosAxis, uLight.cosInner, uLight.cosOuter) * cosAxis * cosAxis * cosAxis;
+        flux *= angularWeight(uLight, -toLight) * cosAxis * cosAxis * cosAxis;
     }
     outPosition = vec4(vPosition, 1.0);
     outNormal = vec4(facingNormal(vNormal, vPosition, toLight), 0.0);

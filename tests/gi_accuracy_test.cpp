@@ -130,6 +130,27 @@ TEST(GiAccuracy, IndirectLightMatchesThePathTracerOnCornell) {
     expectIndirectWithin(parts, "Cornell 96x72", kCornellMean[0], kCornellMean[1], kCornellCells[0], kCornellCells[1]);
 }
 
+TEST(GiAccuracy, PointLitCornellMatchesThePathTracer) {
+    // A point light inside the box: six light-view maps (cube faces) serve as shadow map and
+    // photon source. Direct light is exact up to pixel sampling; the indirect part is held to
+    // the same bounds as the spot-lit box.
+    const auto dir = test::testDir();
+    const std::string view = "--scene cornell --width 96 --height 72 --point-pos 0,1.5,0 --point-intensity 3";
+    const ImageF direct = render(dir, "direct", view + " --aov direct");
+    const auto full = dir / "reference.pfm", referenceDirect = dir / "reference_direct.pfm";
+    const test::CommandResult r = test::runVct("reference -q " + view + " --bounces 1 --spp 512 -o " + full.string() +
+                                               " --direct-out " + referenceDirect.string());
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    const ImageF reference = readHdrImage(full), referenceDirectImage = readHdrImage(referenceDirect);
+    const metrics::RegionRatios directRegions = metrics::regionRatios(direct, referenceDirectImage, 1, 1);
+    const double directRatio = directRegions.meanA / directRegions.meanB;
+    std::printf("[ accuracy ] point-lit Cornell: direct %.4f× the path tracer's\n", directRatio);
+    EXPECT_NEAR(directRatio, 1.0, 0.01);
+    const IndirectPair parts{subtract(render(dir, "final", view), direct), subtract(reference, referenceDirectImage)};
+    expectIndirectWithin(parts, "point-lit Cornell 96x72", kCornellMean[0], kCornellMean[1], kCornellCells[0],
+                         kCornellCells[1]);
+}
+
 TEST(GiAccuracy, IndirectLightMatchesThePathTracerOnSponza) {
     const test::CommandResult found = test::runVct("info --scene sponza");
     if (found.exitCode != 0) GTEST_SKIP() << "Sponza is not in the asset search path: " << found.output;

@@ -136,6 +136,38 @@ TEST_F(PassGraphTest, OnlyTheChangedLightsMapIsRenderedAgain) {
     EXPECT_EQ(renderer.statistics().lightViewsTotal, 2u);
 }
 
+TEST_F(PassGraphTest, AMovedPointLightRendersItsSixFacesAndNoOctreePass) {
+    Scene lit = scene_;
+    Light point;
+    point.type = LightType::Point;
+    point.position = {0.1, 1.4, 0.2};
+    point.intensity = 3.0;
+    lit.lights.push_back(point);  // beside the box's spot
+    Renderer renderer(lit, smallSettings());
+    const Camera camera = lit.cameras[0];
+    renderer.renderFrame(camera);
+    EXPECT_EQ(renderer.statistics().lightViewsTotal, 7u);  // the spot's map and the point light's cube
+    EXPECT_EQ(renderer.statistics().lightViewsRendered, 7u);
+
+    renderer.renderFrame(moved(camera));
+    EXPECT_EQ(ran(renderer), (Names{Pass::GBuffer, Pass::DirectLighting, Pass::ConeTrace, Pass::Composite})) << "camera moved";
+
+    std::vector<Light> lights = renderer.lights();
+    lights[1].position.x += 0.2;
+    renderer.setLights(lights);
+    renderer.renderFrame(moved(camera));
+    EXPECT_EQ(ran(renderer), (Names{Pass::LightView, Pass::Inject, Pass::RadianceLeaves, Pass::RadianceMip, Pass::DirectLighting,
+                                    Pass::ConeTrace, Pass::Composite}))
+        << "point light moved";
+    EXPECT_EQ(renderer.statistics().lightViewsRendered, 6u) << "only the point light's six faces";
+
+    lights[1].type = LightType::Spot;  // a cube of maps becomes one map
+    renderer.setLights(lights);
+    renderer.renderFrame(moved(camera));
+    EXPECT_EQ(renderer.statistics().lightViewsRendered, 1u);
+    EXPECT_EQ(renderer.statistics().lightViewsTotal, 2u);
+}
+
 TEST_F(PassGraphTest, IncrementalFramesAreBitIdenticalToFreshOnes) {
     const Camera camera = scene_.cameras[0];
     Renderer incremental(scene_, smallSettings());

@@ -90,6 +90,32 @@ TEST(DirectLighting, SpotOnPlaneMatchesInverseSquareAndFalloff) {
     EXPECT_EQ(checked, 48);
 }
 
+TEST(DirectLighting, PointLightOnPlaneMatchesInverseSquareAcrossItsCubeFaces) {
+    // A point light is drawn as six cube faces: 2 m above the floor, the face looking down covers
+    // the floor out to |x| = 2 m and the side faces the rest. The view reaches |x| = 2.31 m, so the
+    // row crosses the seams between faces, where nothing may be lost or counted twice.
+    const auto dir = test::testDir();
+    test::ObjWriter obj;
+    obj.material("white", glm::vec3(0.8f));
+    obj.floor(0.0f, 3.0f);
+    const auto model = obj.write(dir);
+    const double I = 5.0, height = 2.0;
+    const ImageF image = renderTopDown(model, "--point-pos 0,2,0 --point-intensity 5");
+    const double halfExtent = 4.0 * std::tan(glm::radians(30.0));
+    int checked = 0, beyondSeam = 0;
+    for (int x = 0; x < 96; ++x) {
+        const double px = ((x + 0.5) / 96.0 * 2.0 - 1.0) * halfExtent;
+        const double d2 = px * px + height * height;
+        const double E = I * (height / std::sqrt(d2)) / d2;  // I·cosθ/d²
+        const double expected = 0.8 / glm::pi<double>() * E;
+        EXPECT_NEAR(image.at(x, 48)[1], expected, 0.02 * expected) << "x " << x << " px " << px;
+        ++checked;
+        if (std::abs(px) > height) ++beyondSeam;
+    }
+    EXPECT_EQ(checked, 96);
+    EXPECT_GE(beyondSeam, 8);  // the row does reach the side faces
+}
+
 TEST(DirectLighting, BoxCastsAShadowOnTheFloor) {
     const auto dir = test::testDir();
     test::ObjWriter obj;

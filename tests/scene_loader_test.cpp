@@ -799,6 +799,30 @@ TEST(Asset, SponzaNotFoundMessage) {
 // ------------------------------------------------------------------------------------------------
 // Light and camera validation
 
+TEST(Loader, GltfPointLight) {
+    // The same file with its spot turned into a KHR_lights_punctual point light.
+    std::string gltf = farAwayGltf();
+    const std::string spot = R"({"name": "SpotData", "type": "spot", "color": [1, 0.5, 0.5], "intensity": 5,
+     "spot": {"innerConeAngle": 0.3, "outerConeAngle": 0.6}})";
+    const std::size_t at = gltf.find(spot);
+    ASSERT_NE(at, std::string::npos);
+    gltf.replace(at, spot.size(), R"({"name": "Bulb", "type": "point", "color": [0.5, 1, 0.25], "intensity": 7})");
+    const fs::path dir = vct::test::testDir();
+    writeText(dir / "point.gltf", gltf);
+    const Scene scene = vct::loadModelFile(dir / "point.gltf");
+    ASSERT_EQ(scene.lights.size(), 1u);
+    const vct::Light& light = scene.lights[0];
+    EXPECT_EQ(light.type, vct::LightType::Point);
+    EXPECT_NEAR(light.position.x, 1000000.0, 1e-9);  // its node's origin
+    EXPECT_NEAR(light.position.y, 2.0, 1e-9);
+    EXPECT_NEAR(light.position.z, 0.0, 1e-9);
+    EXPECT_NEAR(light.intensity, 7.0, 1e-6);  // candela taken as W/sr, like a spot's
+    EXPECT_NEAR(light.color.x, 0.5, 1e-6);
+    EXPECT_NEAR(light.color.y, 1.0, 1e-6);
+    EXPECT_NEAR(light.color.z, 0.25, 1e-6);
+    EXPECT_NO_THROW(vct::validateLight(light, "the file's point light"));
+}
+
 TEST(SceneValidation, Lights) {
     vct::Light sun;
     EXPECT_NO_THROW(vct::validateLight(sun, "sun"));
@@ -847,6 +871,26 @@ TEST(SceneValidation, Lights) {
     l = spot;
     l.irradiance = -5.0;
     EXPECT_NO_THROW(vct::validateLight(l, "spot"));
+
+    // A point light shines every way: its direction and cone angles are not used.
+    vct::Light point;
+    point.type = vct::LightType::Point;
+    point.position = {0, 2, 0};
+    point.intensity = 3.0;
+    point.direction = glm::dvec3(0.0);
+    point.outerAngleDeg = 120.0;
+    EXPECT_NO_THROW(vct::validateLight(point, "point"));
+    EXPECT_NE(vct::describe(point).find("point light"), std::string::npos) << vct::describe(point);
+    l = point;
+    l.intensity = 0.0;
+    EXPECT_TRUE(contains(messageFor(l), "point light")) << messageFor(l);
+    EXPECT_TRUE(contains(messageFor(l), "intensity"));
+    l = point;
+    l.intensity = 1e30;
+    EXPECT_TRUE(contains(messageFor(l), "supported range")) << messageFor(l);
+    l = point;
+    l.position.z = INFINITY;
+    EXPECT_TRUE(contains(messageFor(l), "position"));
 }
 
 TEST(SceneValidation, Cameras) {

@@ -42,6 +42,8 @@ void addSceneOptions(CLI::App& command, SceneOptions& o, bool withCameraAndLight
     command.add_option("--spot-angles", o.spotAngles, "spot: inner,outer half-angles in degrees (falloff between)")
         ->delimiter(',')
         ->type_name("INNER,OUTER");
+    addVector(command, "--point-pos", o.pointPosition, "point light position");
+    command.add_option("--point-intensity", o.pointIntensity, "point light: intensity I in W/sr in every direction");
     addVector(command, "--light-color", o.lightColor, "linear RGB tint of the lights given on the command line");
 }
 
@@ -49,11 +51,12 @@ Scene loadSceneFromOptions(const SceneOptions& o) {
     Scene scene = loadScene(o.scene, LoadOptions{o.sanitize});
     const bool sun = !o.sunDirection.empty() || o.sunIrradiance;
     const bool spot = !o.spotPosition.empty() || !o.spotDirection.empty() || o.spotIntensity || !o.spotAngles.empty();
-    if (!sun && !spot) {
+    const bool point = !o.pointPosition.empty() || o.pointIntensity;
+    if (!sun && !spot && !point) {
         // Nothing is silently ignored: the tint belongs to lights given here.
         if (!o.lightColor.empty())
             fail("--light-color tints the lights given on the command line; add --sun-dir/--sun-irradiance or "
-                 "--spot-pos/--spot-dir/--spot-intensity/--spot-angles");
+                 "--spot-pos/--spot-dir/--spot-intensity/--spot-angles or --point-pos/--point-intensity");
         return scene;
     }
     const glm::dvec3 color = o.lightColor.empty() ? glm::dvec3(1.0) : toVec3(o.lightColor, "--light-color");
@@ -86,6 +89,18 @@ Scene loadSceneFromOptions(const SceneOptions& o) {
         light.color = color;
         validateLight(light, "the spot light given on the command line");
         light.direction = glm::normalize(light.direction);
+        lights.push_back(light);
+    }
+    if (point) {
+        const Light* own = firstOfType(scene.lights, LightType::Point);
+        Light light = own ? *own : Light{};
+        light.type = LightType::Point;
+        // Without a position: in the middle of the scene, a little above its centre.
+        if (!own) light.position = scene.worldBounds.centre() + glm::dvec3(0.0, 0.25 * scene.worldBounds.size().y, 0.0);
+        if (!o.pointPosition.empty()) light.position = toVec3(o.pointPosition, "--point-pos");
+        if (o.pointIntensity) light.intensity = *o.pointIntensity;
+        light.color = color;
+        validateLight(light, "the point light given on the command line");
         lights.push_back(light);
     }
     scene.lights = lights;

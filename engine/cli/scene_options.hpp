@@ -20,14 +20,17 @@ struct SceneOptions {
     std::optional<double> sunIrradiance;
     std::vector<double> spotPosition, spotDirection, spotAngles;
     std::optional<double> spotIntensity;
+    std::vector<double> pointPosition;
+    std::optional<double> pointIntensity;
     std::vector<double> lightColor;
 };
 
 void addSceneOptions(CLI::App& command, SceneOptions& options, bool withCameraAndLights);
 
-// Loads the scene and replaces its lights when any --sun-* / --spot-* option is given (a sun
-// option gives one sun, a spot option one spot, both give both; parameters not given keep the
-// scene's own light of that type, or a documented default).
+// Loads the scene and replaces its lights when any --sun-* / --spot-* / --point-* option is given
+// (a sun option gives one sun, a spot option one spot, a point option one point light, together
+// they give each; parameters not given keep the scene's own light of that type, or a documented
+// default).
 Scene loadSceneFromOptions(const SceneOptions& options);
 
 // The scene's default camera, or the chosen preset, with --eye/--target/--up/--fov applied.

@@ -13,15 +13,16 @@ PhotonInjection::PhotonInjection()
       emissive_(gl::buildProgram({{GL_COMPUTE_SHADER, "inject_emissive.comp"}})),
       normalize_(gl::buildProgram({{GL_COMPUTE_SHADER, "radiance_normalize.comp"}})) {}
 
-double fluxWattsPerUnit(const std::vector<Light>& lights, const std::vector<LightViewMap>& lightViews) {
+double fluxWattsPerUnit(const std::vector<Light>& lights, const LightViewSets& lightViews) {
     double maxFlux = 0.0;
     for (std::size_t i = 0; i < lights.size(); ++i)
-        maxFlux = std::max(maxFlux, LightViewMap::maxTexelFlux(lights[i], lightViews[i].transform()));
+        for (const LightViewMap& map : lightViews[i])
+            maxFlux = std::max(maxFlux, LightViewMap::maxTexelFlux(lights[i], map.transform()));
     return maxFlux > 0.0 && std::isfinite(maxFlux) ? maxFlux / 16777216.0 : 1.0;
 }
 
 void PhotonInjection::run(const Octree& octree, RadianceVolume& volume, const Scene& scene,
-                          const std::vector<Light>& lights, const std::vector<LightViewMap>& lightViews, bool photons) {
+                          const std::vector<Light>& lights, const LightViewSets& lightViews, bool photons) {
     const std::uint32_t zero = 0;
     const float zeros[4] = {0, 0, 0, 0};
     for (const gl::Buffer* b : {&volume.accumulators, &volume.touchedFlag, &volume.borderFlag, &volume.listCounts})
@@ -31,7 +32,8 @@ void PhotonInjection::run(const Octree& octree, RadianceVolume& volume, const Sc
     glMemoryBarrier(GL_ALL_BARRIER_BITS);
     volume.wattsPerUnit = fluxWattsPerUnit(lights, lightViews);
     std::uint64_t texels = 0;
-    for (const LightViewMap& map : lightViews) texels += std::uint64_t(map.resolution()) * std::uint64_t(map.resolution());
+    for (const std::vector<LightViewMap>& maps : lightViews)
+        for (const LightViewMap& map : maps) texels += std::uint64_t(map.resolution()) * std::uint64_t(map.resolution());
     if (texels > (std::uint64_t(1) << 33))
         fail("the light-view maps have ", texels, " texels in all; more than 2^33 could overflow the 64-bit photon sums. "
              "Lower --light-view-res or use fewer lights");
@@ -44,16 +46,16 @@ void PhotonInjection::run(const Octree& octree, RadianceVolume& volume, const Sc
         inject.uniform("uVoxelOrigin", glm::vec3(octree.grid.localMin))
             .uniform("uVoxelScale", float(1.0 / octree.grid.voxelSize))
             .storage(gl::SSBO_CELL_AREA, octree.cellArea);
-        for (std::size_t i = 0; i < lightViews.size(); ++i) {
-            const LightViewMap& map = lightViews[i];
-            // Units for a texel of relative flux 1: ≤ 2^24 (the brightest light), in double first.
-            const double units = LightViewMap::maxTexelFlux(lights[i], map.transform()) / volume.wattsPerUnit;
-            inject.uniform("uUnitsPerRelativeFlux", float(std::min(units, 16777216.0)))
-                .texture(gl::TEXTURE_LIGHT_POSITION, map.position())
-                .texture(gl::TEXTURE_LIGHT_FLUX, map.flux())
-                .texture(gl::TEXTURE_LIGHT_NORMAL, map.normal())
-                .dispatchImage(map.resolution(), map.resolution(), barrier);
-        }
+        for (std::size_t i = 0; i < lights.size(); ++i)
+            for (const LightViewMap& map : lightViews[i]) {
+                // Units for a texel of relative flux 1: ≤ 2^24 (the brightest light), in double first.
+                const double units = LightViewMap::maxTexelFlux(lights[i], map.transform()) / volume.wattsPerUnit;
+                inject.uniform("uUnitsPerRelativeFlux", float(std::min(units, 16777216.0)))
+                    .texture(gl::TEXTURE_LIGHT_POSITION, map.position())
+                    .texture(gl::TEXTURE_LIGHT_FLUX, map.flux())
+                    .texture(gl::TEXTURE_LIGHT_NORMAL, map.normal())
+                    .dispatchImage(map.resolution(), map.resolution(), barrier);
+            }
     }
     if (octree.hasEmissive) {
         gl::ComputeCall emissive(emissive_);

@@ -14,7 +14,7 @@ public:
     PhotonInjection();
     // Clears `volume`, injects. `photons` false: only emission (the `--no-photons` toggle).
     void run(const Octree& octree, RadianceVolume& volume, const Scene& scene, const std::vector<Light>& lights,
-             const std::vector<LightViewMap>& lightViews, bool photons);
+             const LightViewSets& lightViews, bool photons);
 
 private:
     gl::Program inject_, emissive_, normalize_;
@@ -27,6 +27,6 @@ private:
 // texel adds at most 2^31 units (clamped: albedo > 128), and vct refuses more than 2^33 light-view
 // texels in all, so no 64-bit sum can overflow: never wrapped, by construction. Computed in
 // double, so any light in kMinLightQuantity..kMaxLightQuantity over any scene size works.
-double fluxWattsPerUnit(const std::vector<Light>& lights, const std::vector<LightViewMap>& lightViews);
+double fluxWattsPerUnit(const std::vector<Light>& lights, const LightViewSets& lightViews);
 
 }  // namespace vct

@@ -80,7 +80,7 @@ void renderLightViews(FrameResources& f) {
     const LightViewCache::Key key{f.version(Input::Geometry), f.version(Input::Materials),
                                   f.settings.lightViewResolution};
     f.statistics.lightViewsRendered = f.lightViews.update(*f.gpuScene, *f.scene, f.lights, key);
-    f.statistics.lightViewsTotal = std::uint32_t(f.lights.size());
+    f.statistics.lightViewsTotal = f.lightViews.mapCount();
 }
 
 void injectPhotons(FrameResources& f) {
@@ -90,7 +90,7 @@ void injectPhotons(FrameResources& f) {
         allocateRadianceVolume(octree, *f.radiance);
     }
     if (!f.injection) f.injection = std::make_unique<PhotonInjection>();
-    f.injection->run(octree, *f.radiance, *f.scene, f.lights, f.lightViews.maps(), f.settings.photons);
+    f.injection->run(octree, *f.radiance, *f.scene, f.lights, f.lightViews.views(), f.settings.photons);
 }
 
 void filterLeafRadiance(FrameResources& f) {
@@ -188,7 +188,7 @@ const PassTable kFramePasses = {{
      {I::Lights, I::ShadowSettings}, {R::GBuffer, R::LightViewMaps}, {R::DirectRadiance}, unlessLitView,
      "direct_lighting.comp",
      [](FrameResources& f, const FrameView&) {
-         f.direct->render(*f.gbuffer, *f.scene, f.lights, f.lightViews.maps(), f.settings.pcfRadius);
+         f.direct->render(*f.gbuffer, *f.scene, f.lights, f.lightViews.views(), f.settings.pcfRadius);
      }},
     {Pass::ConeTrace, "cone_trace", Stage::Camera,
      {I::ConeSettings}, {R::GBuffer, R::RadianceBricks}, {R::IndirectIrradiance}, unlessConeTrace,

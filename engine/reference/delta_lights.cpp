@@ -11,8 +11,8 @@ DeltaLights::DeltaLights(const Scene& scene) {
         LocalLight l;
         l.type = light.type;
         l.position = light.position - scene.origin;
-        l.direction = glm::normalize(light.direction);
-        l.radiometric = light.color * (light.type == LightType::Directional ? light.irradiance : light.intensity);
+        l.direction = light.type == LightType::Point ? glm::dvec3(0.0) : glm::normalize(light.direction);
+        l.radiometric = light.color * lightQuantity(light);
         l.innerDeg = light.innerAngleDeg;
         l.outerDeg = light.outerAngleDeg;
         lights_.push_back(l);
@@ -37,7 +37,9 @@ glm::dvec3 DeltaLights::reflected(const RayScene& rays, const SurfaceHit& hit, g
             const glm::dvec3 toLight = toLightVector / std::sqrt(d2);
             const double cosTheta = glm::dot(glm::dvec3(normal), toLight);
             if (cosTheta <= 0.0 || glm::dot(glm::dvec3(geometricNormal), toLight) <= 0.0) continue;
-            const double falloff = spotFalloff(glm::dot(-toLight, light.direction), light.innerDeg, light.outerDeg);
+            const double falloff = light.type == LightType::Point
+                                       ? 1.0
+                                       : spotFalloff(glm::dot(-toLight, light.direction), light.innerDeg, light.outerDeg);
             if (falloff <= 0.0) continue;
             // The shadow ray runs from the offset origin to the light itself, and stops just
             // short of it so that geometry touching the light does not count.

@@ -1,10 +1,11 @@
 #pragma once
-// Next-event estimation for the scene's lights. Both light types are delta lights (a direction,
+// Next-event estimation for the scene's lights. Every light type is a delta light (a direction,
 // a point): a bounce ray can never hit them, so sampling them explicitly at every surface hit is
 // the only way they contribute, and it is exact (no pdf: one shadow ray per light).
 //
 //   directional: E = irradiance · colour,                       shadow ray to infinity
 //   spot:        E = I · colour · spotFalloff(cos α) / d²,      shadow ray to the light position
+//   point:       E = I · colour / d²,                           shadow ray to the light position
 //   L = ρ/π · E · cosθ · visibility,   θ against the shading normal turned to the viewer
 //
 // spotFalloff is the one in engine/scene/light.hpp, which the GLSL side mirrors.
@@ -34,8 +35,8 @@ public:
 private:
     struct LocalLight {
         LightType type;
-        glm::dvec3 position;     // scene-local (spot)
-        glm::dvec3 direction;    // unit, direction of travel
+        glm::dvec3 position;     // scene-local (spot, point)
+        glm::dvec3 direction;    // unit, direction of travel (spot, directional)
         glm::dvec3 radiometric;  // E·colour (W/m²) or I·colour (W/sr)
         double innerDeg, outerDeg;
     };

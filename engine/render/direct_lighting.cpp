@@ -12,7 +12,7 @@ DirectLighting::DirectLighting(int width, int height)
       program_(gl::buildProgram({{GL_COMPUTE_SHADER, "direct_lighting.comp"}})) {}
 
 void DirectLighting::render(const GBuffer& gbuffer, const Scene& scene, const std::vector<Light>& lights,
-                            const std::vector<LightViewMap>& lightViews, int pcfRadius) {
+                            const LightViewSets& lightViews, int pcfRadius) {
     gl::ComputeCall call(program_);
     call.texture(gl::TEXTURE_GBUFFER_ALBEDO, gbuffer.albedo())
         .texture(gl::TEXTURE_GBUFFER_NORMAL, gbuffer.normal())
@@ -23,16 +23,18 @@ void DirectLighting::render(const GBuffer& gbuffer, const Scene& scene, const st
         const float zero[4] = {0, 0, 0, 0};
         glClearTexImage(radiance_.id(), 0, GL_RGBA, GL_FLOAT, zero);
     }
-    for (std::size_t i = 0; i < lights.size(); ++i) {
-        const LightViewMap& map = lightViews[i];
-        setLightUniforms(call.program(), lights[i], scene);
-        call.texture(gl::TEXTURE_SHADOW_MAP, map.depth())
-            .uniform("uLightViewProjection", map.transform().view.viewProjection)
-            .uniform("uShadowTexelSize", map.transform().texelWorldSize)
-            .uniform("uShadowPerspective", map.transform().perspective ? 1 : 0)
-            .uniform("uAccumulate", i > 0 ? 1 : 0)
-            .dispatchImage(width_, height_, GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
-    }
+    bool first = true;
+    for (std::size_t i = 0; i < lights.size(); ++i)
+        for (const LightViewMap& map : lightViews[i]) {
+            setLightUniforms(call.program(), lights[i], scene, map.face());
+            call.texture(gl::TEXTURE_SHADOW_MAP, map.depth())
+                .uniform("uLightViewProjection", map.transform().view.viewProjection)
+                .uniform("uShadowTexelSize", map.transform().texelWorldSize)
+                .uniform("uShadowPerspective", map.transform().perspective ? 1 : 0)
+                .uniform("uAccumulate", first ? 0 : 1)
+                .dispatchImage(width_, height_, GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
+            first = false;
+        }
 }
 
 }  // namespace vct

@@ -13,7 +13,7 @@ class DirectLighting {
 public:
     DirectLighting(int width, int height);
     void render(const GBuffer& gbuffer, const Scene& scene, const std::vector<Light>& lights,
-                const std::vector<LightViewMap>& lightViews, int pcfRadius);
+                const LightViewSets& lightViews, int pcfRadius);
     GLuint radiance() const { return radiance_.id(); }
     std::size_t bytes() const { return std::size_t(width_) * height_ * 16; }
 

@@ -4,5 +4,6 @@
 #include "scene/scene.hpp"
 
 namespace vct {
-void setLightUniforms(GLuint program, const Light& light, const Scene& scene);
+// `face`: the cube face (render/cube_faces.hpp) of a point light's view; 0 for the other lights.
+void setLightUniforms(GLuint program, const Light& light, const Scene& scene, int face = 0);
 }

@@ -5,6 +5,7 @@
 #include "core/error.hpp"
 #include "gl/raster_state.hpp"
 #include "gl/shader.hpp"
+#include "render/cube_faces.hpp"
 #include "render/light_uniforms.hpp"
 
 namespace vct {
@@ -39,18 +40,20 @@ LightViewMap::LightViewMap(int resolution)
         fail("the light-view framebuffer is incomplete on this driver (", resolution, "²)");
 }
 
+int lightViewCount(const Light& light) { return light.type == LightType::Point ? kCubeFaces : 1; }
+
 double LightViewMap::maxTexelFlux(const Light& light, const LightViewTransform& transform) {
-    const double quantity = light.type == LightType::Directional ? light.irradiance : light.intensity;
-    return quantity * std::max({light.color.x, light.color.y, light.color.z}) * transform.texelFootprint;
+    return lightQuantity(light) * std::max({light.color.x, light.color.y, light.color.z}) * transform.texelFootprint;
 }
 
 std::size_t LightViewMap::bytes() const { return std::size_t(resolution_) * resolution_ * (4 + 16 + 8 + 16); }
 
-void LightViewMap::render(const GpuScene& gpuScene, const Scene& scene, const Light& light) {
+void LightViewMap::render(const GpuScene& gpuScene, const Scene& scene, const Light& light, int face) {
     // Every light reaches the GPU through here (Renderer::setLights validates too, a Scene's own
     // lights are not validated before): nothing non-finite or out of float's range is drawn.
     validateLight(light, "light");
-    transform_ = lightView(light, scene, resolution_);
+    face_ = face;
+    transform_ = lightView(light, scene, resolution_, face);
     gl::beginRasterPass({framebuffer_.id(), resolution_, resolution_, true});
     const float zero[4] = {0, 0, 0, 0};
     for (int i = 0; i < 3; ++i) glClearNamedFramebufferfv(framebuffer_.id(), GL_COLOR, i, zero);
@@ -58,10 +61,9 @@ void LightViewMap::render(const GpuScene& gpuScene, const Scene& scene, const Li
     const GLuint p = program_.id();
     glUseProgram(p);
     gl::setUniform(p, "uViewProjection", transform_.view.viewProjection);
-    const double quantity = light.type == LightType::Directional ? light.irradiance : light.intensity;
     gl::setUniform(p, "uInverseQuantity",
-                   float(1.0 / (quantity * std::max({light.color.x, light.color.y, light.color.z}))));
-    setLightUniforms(p, light, scene);
+                   float(1.0 / (lightQuantity(light) * std::max({light.color.x, light.color.y, light.color.z}))));
+    setLightUniforms(p, light, scene, face);
     gpuScene.draw(p);
     gl::endRasterPass();
 }

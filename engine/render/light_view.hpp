@@ -1,7 +1,10 @@
 #pragma once
 // Light-view map (DESIGN §4 pass 7): the scene rendered from one light. Its depth is the shadow
 // map of the direct pass; position, normal and reflected flux per texel are the photons that the
-// GI pipeline injects into the voxel octree.
+// GI pipeline injects into the voxel octree. A sun or a spot has one map; a point light has six,
+// the faces of a cube around it (render/cube_faces.hpp), and every pass takes them one by one.
+#include <vector>
+
 #include "gl/objects.hpp"
 #include "render/gpu_scene.hpp"
 #include "render/view.hpp"
@@ -11,7 +14,8 @@ namespace vct {
 class LightViewMap {
 public:
     explicit LightViewMap(int resolution);
-    void render(const GpuScene& gpuScene, const Scene& scene, const Light& light);
+    // `face`: which cube face of a point light this map shows (0 for the other lights).
+    void render(const GpuScene& gpuScene, const Scene& scene, const Light& light, int face = 0);
 
     GLuint depth() const { return depth_.id(); }        // DEPTH32F, compare mode GL_GEQUAL
     GLuint position() const { return position_.id(); }  // RGBA32F scene-local, w=0 empty
@@ -24,14 +28,22 @@ public:
     static double maxTexelFlux(const Light& light, const LightViewTransform& transform);
     const LightViewTransform& transform() const { return transform_; }
     int resolution() const { return resolution_; }
+    int face() const { return face_; }
     std::size_t bytes() const;
 
 private:
     int resolution_;
+    int face_ = 0;
     gl::Texture depth_, position_, normal_, flux_;
     gl::Framebuffer framebuffer_;
     gl::Program program_;
     LightViewTransform transform_;
 };
+
+// How many maps a light needs: six for a point light (a cube), one for the others.
+int lightViewCount(const Light& light);
+
+// Every light's maps, in the order of the scene's lights.
+using LightViewSets = std::vector<std::vector<LightViewMap>>;
 
 }  // namespace vct

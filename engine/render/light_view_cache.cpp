@@ -4,30 +4,44 @@ namespace vct {
 
 std::uint32_t LightViewCache::update(const GpuScene& gpuScene, const Scene& scene, const std::vector<Light>& lights,
                                      const Key& key) {
-    if (key_ != key || maps_.size() != lights.size()) {
+    if (key_ != key || views_.size() != lights.size()) {
         clear();
-        for (std::size_t i = 0; i < lights.size(); ++i) maps_.emplace_back(key.resolution);
+        views_.resize(lights.size());
         renderedFor_.assign(lights.size(), std::nullopt);
         key_ = key;
     }
     std::uint32_t rendered = 0;
     for (std::size_t i = 0; i < lights.size(); ++i) {
         if (renderedFor_[i] == lights[i]) continue;
-        maps_[i].render(gpuScene, scene, lights[i]);
+        // A light that changed type (a spot became a point light) needs another number of maps.
+        std::vector<LightViewMap>& maps = views_[i];
+        const int count = lightViewCount(lights[i]);
+        if (int(maps.size()) != count) {
+            maps.clear();
+            for (int face = 0; face < count; ++face) maps.emplace_back(key.resolution);
+        }
+        for (int face = 0; face < count; ++face) maps[face].render(gpuScene, scene, lights[i], face);
         renderedFor_[i] = lights[i];
-        ++rendered;
+        rendered += std::uint32_t(count);
     }
     return rendered;
 }
 
+std::uint32_t LightViewCache::mapCount() const {
+    std::uint32_t count = 0;
+    for (const std::vector<LightViewMap>& maps : views_) count += std::uint32_t(maps.size());
+    return count;
+}
+
 std::size_t LightViewCache::bytes() const {
     std::size_t total = 0;
-    for (const LightViewMap& map : maps_) total += map.bytes();
+    for (const std::vector<LightViewMap>& maps : views_)
+        for (const LightViewMap& map : maps) total += map.bytes();
     return total;
 }
 
 void LightViewCache::clear() {
-    maps_.clear();
+    views_.clear();
     renderedFor_.clear();
     key_.reset();
 }

@@ -1,6 +1,6 @@
 #pragma once
-// The light-view maps of the scene's lights, one per light. A map is rendered again only when
-// its light changed (Light::operator==) or when what every map shows changed: the geometry, the
+// The light-view maps of the scene's lights: one per light, six (a cube) per point light. A
+// light's maps are rendered again only when the light changed (Light::operator==) or when what every map shows changed: the geometry, the
 // materials or the map resolution (`Key`).
 #include <optional>
 #include <vector>
@@ -17,15 +17,16 @@ public:
         bool operator==(const Key&) const = default;
     };
 
-    // Renders the maps that are out of date; returns how many it rendered.
+    // Renders the maps that are out of date; returns how many maps it rendered.
     std::uint32_t update(const GpuScene& gpuScene, const Scene& scene, const std::vector<Light>& lights, const Key& key);
-    const std::vector<LightViewMap>& maps() const { return maps_; }
+    const LightViewSets& views() const { return views_; }
+    std::uint32_t mapCount() const;
     std::size_t bytes() const;
     void clear();
 
 private:
-    std::vector<LightViewMap> maps_;
-    std::vector<std::optional<Light>> renderedFor_;  // the light each map shows
+    LightViewSets views_;
+    std::vector<std::optional<Light>> renderedFor_;  // the light each set of maps shows
     std::optional<Key> key_;
 };
 

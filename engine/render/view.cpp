@@ -5,6 +5,8 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "render/cube_faces.hpp"
+
 namespace vct {
 namespace {
 
@@ -55,7 +57,7 @@ ViewTransform cameraView(const Camera& camera, const Scene& scene, int width, in
     return finish(view, projection, eye, forward, width, height);
 }
 
-LightViewTransform lightView(const Light& light, const Scene& scene, int resolution) {
+LightViewTransform lightView(const Light& light, const Scene& scene, int resolution, int face) {
     const Bounds bounds = scene.localBounds();
     const glm::dvec3 centre = bounds.centre();
     const double radius = std::max(0.5 * glm::length(bounds.size()), 1e-30);
@@ -71,13 +73,18 @@ LightViewTransform lightView(const Light& light, const Scene& scene, int resolut
         result.texelWorldSize = float(texel);
         result.texelFootprint = texel * texel;
     } else {
+        // A spot's view covers its outer cone; a point light's face covers the face's square,
+        // 90°, widened by a margin of texels (kCubeFaceMarginTexels) on every side.
+        const bool point = light.type == LightType::Point;
+        const glm::dvec3 axis = point ? cubeFaceAxis(face) : direction;
         const glm::dvec3 eye = light.position - scene.origin;
-        const double fov = 2.0 * glm::radians(std::min(light.outerAngleDeg, 85.0));
+        const double fov = point ? 2.0 * std::atan(resolution / double(resolution - 2 * kCubeFaceMarginTexels))
+                                 : 2.0 * glm::radians(std::min(light.outerAngleDeg, 85.0));
         const double farthest = glm::length(eye - centre) + radius;
         const double nearPlane = std::max(farthest * 1e-4, 1e-30);
-        const glm::dmat4 view = glm::lookAtRH(eye, eye + direction, stableUp(direction, {0, 1, 0}));
+        const glm::dmat4 view = glm::lookAtRH(eye, eye + axis, stableUp(axis, {0, 1, 0}));
         const glm::dmat4 projection = reverseDepth() * glm::perspectiveRH_ZO(fov, 1.0, nearPlane, farthest);
-        result.view = finish(view, projection, eye, direction, resolution, resolution);
+        result.view = finish(view, projection, eye, axis, resolution, resolution);
         result.perspective = true;
         const double edge = 2.0 * std::tan(fov * 0.5) / resolution;  // texel edge on the plane at distance 1
         result.texelWorldSize = float(edge);

@@ -35,6 +35,8 @@ struct LightViewTransform {
     double texelFootprint = 0.0;  // double: (scene size / resolution)² leaves float's range for 1e±18 scenes
     float texelWorldSize = 0.0f;  // directional: texel edge in metres; spot: edge at distance 1
 };
-LightViewTransform lightView(const Light& light, const Scene& scene, int resolution);
+// The view of a light's light-view map; `face` (0..5, render/cube_faces.hpp) picks a point
+// light's cube face and is ignored for the other lights.
+LightViewTransform lightView(const Light& light, const Scene& scene, int resolution, int face = 0);
 
 }  // namespace vct

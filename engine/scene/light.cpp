@@ -23,15 +23,25 @@ void checkLightRange(double quantity, const glm::dvec3& color, const std::string
 }
 }  // namespace
 
+const char* lightKindName(LightType type) {
+    switch (type) {
+        case LightType::Directional: return "directional light";
+        case LightType::Spot: return "spot light";
+        case LightType::Point: return "point light";
+    }
+    return "light";
+}
+
 void validateLight(const Light& light, const std::string& what) {
-    const bool spot = light.type == LightType::Spot;
-    const char* kind = spot ? "spot light" : "directional light";
-    if (!isFinite(light.direction))
-        fail(what, " (", kind, "): direction ", toText(light.direction),
-             " is not finite; give a direction such as (0, -1, 0)");
-    if (glm::length(light.direction) == 0.0)
-        fail(what, " (", kind, "): direction is the zero vector; give the direction in which the "
-                   "light travels, e.g. (0, -1, 0) for light from straight above");
+    const char* kind = lightKindName(light.type);
+    if (light.type != LightType::Point) {
+        if (!isFinite(light.direction))
+            fail(what, " (", kind, "): direction ", toText(light.direction),
+                 " is not finite; give a direction such as (0, -1, 0)");
+        if (glm::length(light.direction) == 0.0)
+            fail(what, " (", kind, "): direction is the zero vector; give the direction in which the "
+                       "light travels, e.g. (0, -1, 0) for light from straight above");
+    }
     if (!isFinite(light.color) || light.color.x < 0.0 || light.color.y < 0.0 ||
         light.color.z < 0.0)
         fail(what, " (", kind, "): colour ", toText(light.color),
@@ -39,7 +49,7 @@ void validateLight(const Light& light, const std::string& what) {
     if (light.color == glm::dvec3(0.0))
         fail(what, " (", kind, "): colour is black, so the light emits nothing; use a positive "
                    "colour such as (1, 1, 1)");
-    if (!spot) {
+    if (light.type == LightType::Directional) {
         if (!std::isfinite(light.irradiance) || light.irradiance <= 0.0)
             fail(what, " (directional light): irradiance ", light.irradiance,
                  " W/m² must be a positive finite number (bright daylight is ~1000 W/m²; "
@@ -48,12 +58,12 @@ void validateLight(const Light& light, const std::string& what) {
         return;
     }
     if (!isUsableCoordinate(light.position))
-        fail(what, " (spot light): position ", toText(light.position), " is not finite or beyond ±",
+        fail(what, " (", kind, "): position ", toText(light.position), " is not finite or beyond ±",
              kMaxWorldCoordinate);
     if (!std::isfinite(light.intensity) || light.intensity <= 0.0)
-        fail(what, " (spot light): intensity ", light.intensity,
-             " W/sr must be a positive finite number");
-    checkLightRange(light.intensity, light.color, what, "spot light", "intensity", "W/sr");
+        fail(what, " (", kind, "): intensity ", light.intensity, " W/sr must be a positive finite number");
+    checkLightRange(light.intensity, light.color, what, kind, "intensity", "W/sr");
+    if (light.type == LightType::Point) return;
     if (!std::isfinite(light.innerAngleDeg) || !std::isfinite(light.outerAngleDeg))
         fail(what, " (spot light): cone angles inner ", light.innerAngleDeg, "°, outer ",
              light.outerAngleDeg, "° must be finite");
@@ -79,6 +89,10 @@ std::string describe(const Light& light) {
     if (light.type == LightType::Directional) {
         out << "directional light: direction (" << d.x << ", " << d.y << ", " << d.z
             << "), irradiance " << light.irradiance << " W/m²";
+    } else if (light.type == LightType::Point) {
+        const glm::dvec3 p = light.position;
+        out << "point light: position (" << p.x << ", " << p.y << ", " << p.z << "), intensity " << light.intensity
+            << " W/sr";
     } else {
         const glm::dvec3 p = light.position;
         out << "spot light: position (" << p.x << ", " << p.y << ", " << p.z << "), direction ("

@@ -6,6 +6,8 @@
 //       A Lambertian surface of albedo ρ at angle θ to the light reflects L = ρ/π · E · cosθ.
 //   Spot: `intensity` I in W/sr along its axis, attenuated by 1/d² and by spotFalloff():
 //       E(point) = I · spotFalloff(cos α) · cosθ / d²,   α = angle between axis and the point.
+//   Point: `intensity` I in W/sr in every direction, attenuated by 1/d²:
+//       E(point) = I · cosθ / d².   (`direction` and the cone angles are not used.)
 //
 // `direction` is always the direction in which light travels (from the light into the scene):
 // a sun overhead has direction (0,-1,0); a spot pointing at the floor too.
@@ -14,15 +16,15 @@
 
 namespace vct {
 
-enum class LightType { Directional, Spot };
+enum class LightType { Directional, Spot, Point };
 
 struct Light {
     LightType type = LightType::Directional;
-    glm::dvec3 position{0.0};             // world space; spot only
+    glm::dvec3 position{0.0};             // world space; spot and point
     glm::dvec3 direction{0.0, -1.0, 0.0};  // unit, direction of travel
     glm::dvec3 color{1.0};                // linear RGB tint multiplying the scalar quantity
     double irradiance = 1.0;              // directional: W/m²
-    double intensity = 1.0;               // spot: W/sr
+    double intensity = 1.0;               // spot and point: W/sr
     double innerAngleDeg = 30.0;          // spot: full intensity inside this half-angle
     double outerAngleDeg = 45.0;          // spot: zero outside this half-angle
 
@@ -50,5 +52,13 @@ constexpr double kMaxLightQuantity = 1e20;
 void validateLight(const Light& light, const std::string& what);
 
 std::string describe(const Light& light);
+
+// The light's scalar quantity: irradiance (W/m²) for a directional light, intensity (W/sr) else.
+inline double lightQuantity(const Light& light) {
+    return light.type == LightType::Directional ? light.irradiance : light.intensity;
+}
+
+// "directional light", "spot light" or "point light", for messages.
+const char* lightKindName(LightType type);
 
 }  // namespace vct

@@ -463,9 +463,9 @@ void importCameras(const aiScene& ai, const std::unordered_map<std::string, glm:
     }
 }
 
-// A spot's intensity: the file's scalar divided by a pure quadratic attenuation factor; any
+// A spot or point light's intensity: the file's scalar divided by a pure quadratic attenuation factor; any
 // other attenuation is replaced by the inverse-square law, with a warning.
-double spotIntensity(const aiLight& l, double scalar, const std::string& what) {
+double inverseSquareIntensity(const aiLight& l, double scalar, const std::string& what) {
     const double a0 = l.mAttenuationConstant, a1 = l.mAttenuationLinear, a2 = l.mAttenuationQuadratic;
     if (a0 == 0.0 && a1 == 0.0 && a2 > 0.0 && std::isfinite(a2)) return scalar / a2;
     logWarnOnce(what + ":attenuation", concat(what, ": attenuation 1/(", a0, " + ", a1, "·d + ", a2,
@@ -485,20 +485,20 @@ void setConeAngles(const aiLight& l, const std::string& what, Light& light) {
     light.innerAngleDeg = std::min(light.innerAngleDeg, light.outerAngleDeg);
 }
 
-// Lights. vct has directional lights (irradiance, W/m²) and spot lights (intensity, W/sr, with
-// inverse-square falloff). Conversion from what assimp delivers:
+// Lights. vct has directional lights (irradiance, W/m²), spot and point lights (intensity, W/sr,
+// with inverse-square falloff). Conversion from what assimp delivers:
 //   * assimp multiplies glTF's `intensity` into the colour; we split it again into a scalar
 //     (the largest RGB component) and a tint (colour / scalar, so max component = 1).
 //   * glTF's photometric values are taken as the matching radiometric ones: lux → W/m²,
 //     candela → W/sr (no 683 lm/W factor). This keeps the file's light balance; the scene's
 //     exposureEV is derived from the brightest light, so the picture is exposed either way.
-//   * KHR_lights_punctual spots fall off as 1/d² (assimp: quadratic attenuation 1), exactly
+//   * KHR_lights_punctual spots and points fall off as 1/d² (assimp: quadratic attenuation 1), exactly
 //     like ours; a pure quadratic factor q ≠ 1 divides the intensity, any constant or linear
 //     term (other formats) is replaced by the inverse-square law with a warning. glTF `range`
 //     is ignored.
 //   * glTF cone angles are half-angles in radians (assimp passes them through); we use them as
 //     half-angles in degrees, the outer one capped just below 90°.
-//   * point, ambient and area lights have no vct equivalent: skipped with a warning.
+//   * ambient and area lights have no vct equivalent: skipped with a warning.
 void importLights(const aiScene& ai, const std::unordered_map<std::string, glm::dmat4>& byName,
                   bool gltf, const std::string& source, Scene& scene) {
     for (unsigned i = 0; i < ai.mNumLights; ++i) {
@@ -507,9 +507,10 @@ void importLights(const aiScene& ai, const std::unordered_map<std::string, glm::
         const std::string name =
             l->mName.length > 0 ? std::string(l->mName.C_Str()) : concat("light ", i);
         const std::string what = concat(source, ": light '", name, "'");
-        if (l->mType != aiLightSource_DIRECTIONAL && l->mType != aiLightSource_SPOT) {
-            logWarn(concat(what, " is a point, ambient or area light, which vct does not "
-                                 "support (only directional and spot lights); skipped"));
+        if (l->mType != aiLightSource_DIRECTIONAL && l->mType != aiLightSource_SPOT &&
+            l->mType != aiLightSource_POINT) {
+            logWarn(concat(what, " is an ambient or area light, which vct does not "
+                                 "support (only directional, spot and point lights); skipped"));
             continue;
         }
         const glm::dmat4* node = findNode(byName, l->mName);
@@ -531,10 +532,10 @@ void importLights(const aiScene& ai, const std::unordered_map<std::string, glm::
             light.type = LightType::Directional;
             light.irradiance = scalar;
         } else {
-            light.type = LightType::Spot;
+            light.type = l->mType == aiLightSource_SPOT ? LightType::Spot : LightType::Point;
             light.position = transformPoint(world, gltf ? glm::dvec3(0.0) : toDouble(l->mPosition));
-            light.intensity = spotIntensity(*l, scalar, what);
-            setConeAngles(*l, what, light);
+            light.intensity = inverseSquareIntensity(*l, scalar, what);
+            if (light.type == LightType::Spot) setConeAngles(*l, what, light);
         }
         try {
             validateLight(light, what);

@@ -21,9 +21,11 @@ glm::dvec3 directionOfAngles(const LightAngles& angles) {
 }
 
 int steeredLight(const std::vector<Light>& lights) {
-    for (std::size_t i = 0; i < lights.size(); ++i)
-        if (lights[i].type == LightType::Directional) return int(i);
-    return lights.empty() ? -1 : 0;
+    // A point light shines every way: it has no direction to steer.
+    for (LightType type : {LightType::Directional, LightType::Spot})
+        for (std::size_t i = 0; i < lights.size(); ++i)
+            if (lights[i].type == type) return int(i);
+    return -1;
 }
 
 void rotateLight(Light& light, double azimuthStepDeg, double elevationStepDeg) {

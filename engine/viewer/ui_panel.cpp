@@ -131,20 +131,29 @@ void cameraSection(ViewerState& state, const PanelInputs& in) {
     ImGui::Text("move speed %.3g units/s (mouse wheel)", in.camera.speed());
 }
 
-bool lightsSection(ViewerState& state) {
+bool lightsSection(ViewerState& state, const PanelInputs& in) {
     if (!ImGui::CollapsingHeader("Lights")) return false;
     bool anyChanged = false;
     for (std::size_t i = 0; i < state.lights.size(); ++i) {
         Light& light = state.lights[i];
         ImGui::PushID(int(i));
         const bool sun = light.type == LightType::Directional;
-        ImGui::Text("%s %zu%s", sun ? "sun" : "spot", i, int(i) == steeredLight(state.lights) ? " (arrow keys)" : "");
-        LightAngles angles = anglesOfDirection(light.direction);
-        float azimuth = float(angles.azimuthDeg), elevation = float(angles.elevationDeg);
-        bool changed = ImGui::SliderFloat("azimuth", &azimuth, -180.0f, 180.0f, "%.1f°");
-        changed |= ImGui::SliderFloat("elevation", &elevation, -89.0f, 89.0f, "%.1f°");
-        if (changed) {
-            light.direction = directionOfAngles({azimuth, elevation});
+        const char* kind = sun ? "sun" : light.type == LightType::Spot ? "spot" : "point";
+        ImGui::Text("%s %zu%s", kind, i, int(i) == steeredLight(state.lights) ? " (arrow keys)" : "");
+        bool changed = false;
+        if (light.type == LightType::Point) {
+            glm::vec3 position(light.position);
+            const float step = 0.005f * float(glm::length(in.scene.worldBounds.size()));
+            if (ImGui::DragFloat3("position", &position.x, step, 0.0f, 0.0f, "%.3g")) {
+                light.position = glm::dvec3(position);
+                changed = true;
+            }
+        } else {
+            LightAngles angles = anglesOfDirection(light.direction);
+            float azimuth = float(angles.azimuthDeg), elevation = float(angles.elevationDeg);
+            changed = ImGui::SliderFloat("azimuth", &azimuth, -180.0f, 180.0f, "%.1f°");
+            changed |= ImGui::SliderFloat("elevation", &elevation, -89.0f, 89.0f, "%.1f°");
+            if (changed) light.direction = directionOfAngles({azimuth, elevation});
         }
         float power = float(sun ? light.irradiance : light.intensity);
         if (ImGui::DragFloat(sun ? "irradiance W/m²" : "intensity W/sr", &power, std::max(power, 1e-3f) * 0.01f, 1e-4f,
@@ -250,7 +259,7 @@ PanelEdits UiPanel::draw(ViewerState& state, const PanelInputs& in) {
     passesSection(in);
     memorySection(in);
     cameraSection(state, in);
-    edits.lights = lightsSection(state);
+    edits.lights = lightsSection(state, in);
     settingsSection(state, edits.settings);
     expensiveSection(state, edits.settings);
     ImGui::End();
