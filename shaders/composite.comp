@@ -1,7 +1,8 @@
 #version 450
 // Final image: direct (shadowed) + emissive (+ indirect, with the GI pipeline), written as linear
 // HDR and as a tone-mapped 8-bit sRGB image. With an AOV selected, that buffer is written instead
-// (raw values in HDR, a visualisation in 8 bits).
+// (raw values in HDR, a visualisation in 8 bits). Frames jittered inside the pixel are averaged
+// here, in linear HDR, and the 8-bit image shows the average.
 #include "math.glsl"
 #include "tonemap.glsl"
 
@@ -16,6 +17,7 @@ layout(binding = TEXTURE_DEBUG_IMAGE) uniform sampler2D uDebugImage;  // a debug
 layout(binding = TEXTURE_INDIRECT) uniform sampler2D uIndirect;    // indirect irradiance (rgb), visibility (a)
 layout(rgba32f, binding = IMAGE_HDR) uniform writeonly image2D uHdr;
 layout(rgba8, binding = IMAGE_LDR) uniform writeonly image2D uLdr;
+layout(rgba32f, binding = IMAGE_HDR_SUM) uniform image2D uHdrSum;  // Σ of the samples averaged so far
 
 const int AOV_FINAL = 0;
 const int AOV_DIRECT = 1;
@@ -34,34 +36,25 @@ uniform float uDepthScale;   // depth shown as white in the 8-bit depth view
 uniform int uShowDebugImage;  // 0: no, 1: as it is (albedo), 2: tone-mapped (radiance)
 uniform int uHasIndirect;
 uniform float uGiScale;  // 1 in every accuracy measurement (DESIGN 5.3)
+uniform int uSamplesInAverage;  // 1: this frame starts the average; n > 1: its n-th sample
 
-void main() {
-    ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
-    if (any(greaterThanEqual(pixel, imageSize(uHdr)))) return;
+// The frame's own value at `pixel`: linear HDR (radiance, or the AOV's raw value) and coverage
+// (0 = sky). Accumulated frames average these, then display the average.
+vec4 pixelValue(ivec2 pixel) {
+    if (uShowDebugImage != 0) return vec4(texelFetch(uDebugImage, pixel, 0).rgb, 1.0);
     vec4 position = texelFetch(uPosition, pixel, 0);
     bool sky = position.w <= 0.0;
     vec3 hdr;
-    vec3 ldr;
-    if (uShowDebugImage != 0) {
-        hdr = texelFetch(uDebugImage, pixel, 0).rgb;
-        ldr = linearToSrgb(uShowDebugImage == 2 ? toneCurve(hdr * uExposure, uToneCurve) : hdr);
-        sky = false;
-    } else if (uAov == AOV_ALBEDO) {
+    if (uAov == AOV_ALBEDO) {
         hdr = sky ? vec3(0.0) : texelFetch(uAlbedo, pixel, 0).rgb;
-        ldr = linearToSrgb(hdr);
     } else if (uAov == AOV_NORMAL) {
         hdr = sky ? vec3(0.0) : texelFetch(uNormal, pixel, 0).xyz;
-        ldr = sky ? vec3(0.0) : hdr * 0.5 + 0.5;
     } else if (uAov == AOV_DEPTH) {
-        float depth = sky ? 0.0 : dot(position.xyz - uEye, uForward);
-        hdr = vec3(depth);
-        ldr = vec3(sky ? 0.0 : 1.0 - clamp(depth / uDepthScale, 0.0, 1.0));
+        hdr = vec3(sky ? 0.0 : dot(position.xyz - uEye, uForward));
     } else if (uAov == AOV_INDIRECT) {
         hdr = (sky || uHasIndirect == 0) ? vec3(0.0) : texelFetch(uIndirect, pixel, 0).rgb;  // irradiance, W/m²
-        ldr = linearToSrgb(toneCurve(hdr / PI * uExposure, uToneCurve));
     } else if (uAov == AOV_AO) {
         hdr = vec3(sky || uHasIndirect == 0 ? 1.0 : texelFetch(uIndirect, pixel, 0).a);
-        ldr = hdr;
     } else {
         hdr = texelFetch(uDirect, pixel, 0).rgb;
         // The direct AOV is what the reference's --direct-out holds: emission of the surface seen
@@ -72,8 +65,36 @@ void main() {
             if (uHasIndirect != 0)
                 hdr += uGiScale * texelFetch(uAlbedo, pixel, 0).rgb / PI * texelFetch(uIndirect, pixel, 0).rgb;
         }
-        ldr = linearToSrgb(toneCurve(hdr * uExposure, uToneCurve));
     }
-    imageStore(uHdr, pixel, vec4(hdr, sky ? 0.0 : 1.0));
-    imageStore(uLdr, pixel, vec4(ldr, 1.0));
+    return vec4(hdr, sky ? 0.0 : 1.0);
+}
+
+// The 8-bit picture of a (possibly averaged) value: the tone curve for radiance, a visualisation
+// for the other AOVs. `sky`: no sample of the pixel hit a surface.
+vec3 displayed(vec3 hdr, bool sky) {
+    if (uShowDebugImage != 0) return linearToSrgb(uShowDebugImage == 2 ? toneCurve(hdr * uExposure, uToneCurve) : hdr);
+    if (uAov == AOV_ALBEDO) return linearToSrgb(hdr);
+    if (uAov == AOV_NORMAL) return sky ? vec3(0.0) : hdr * 0.5 + 0.5;
+    if (uAov == AOV_DEPTH) return vec3(sky ? 0.0 : 1.0 - clamp(hdr.x / uDepthScale, 0.0, 1.0));
+    if (uAov == AOV_INDIRECT) return linearToSrgb(toneCurve(hdr / PI * uExposure, uToneCurve));
+    if (uAov == AOV_AO) return hdr;
+    return linearToSrgb(toneCurve(hdr * uExposure, uToneCurve));
+}
+
+void main() {
+    ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
+    if (any(greaterThanEqual(pixel, imageSize(uHdr)))) return;
+    vec4 value = pixelValue(pixel);
+    // Samples of one pixel add up in float in a fixed order (one invocation per pixel), so an
+    // accumulated image is as deterministic as a single frame; the first sample is stored as it is.
+    vec4 average = value;
+    if (uSamplesInAverage > 1) {
+        vec4 sum = imageLoad(uHdrSum, pixel) + value;
+        imageStore(uHdrSum, pixel, sum);
+        average = sum / float(uSamplesInAverage);
+    } else {
+        imageStore(uHdrSum, pixel, value);
+    }
+    imageStore(uHdr, pixel, average);
+    imageStore(uLdr, pixel, vec4(displayed(average.rgb, average.a <= 0.0), 1.0));
 }

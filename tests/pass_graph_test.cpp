@@ -168,6 +168,47 @@ TEST_F(PassGraphTest, AMovedPointLightRendersItsSixFacesAndNoOctreePass) {
     EXPECT_EQ(renderer.statistics().lightViewsTotal, 2u);
 }
 
+TEST_F(PassGraphTest, PixelSamplesRerunOnlyTheCameraPassesAndAverage) {
+    Renderer renderer(scene_, smallSettings());
+    const Camera camera = scene_.cameras[0];
+    renderer.renderFrame(camera, 0);
+    const ImageF centre = renderer.readHdr();
+    EXPECT_EQ(renderer.samplesInOutput(), 1);
+    renderer.renderFrame(camera, 1);
+    EXPECT_EQ(ran(renderer), (Names{Pass::GBuffer, Pass::DirectLighting, Pass::ConeTrace, Pass::Composite}))
+        << "a new sample re-runs the camera's passes and nothing that lights or builds the octree";
+    EXPECT_EQ(renderer.samplesInOutput(), 2);
+    const ImageF averaged = renderer.readHdr();
+    renderer.renderFrame(camera, 1);
+    EXPECT_EQ(ran(renderer), Names{}) << "the same sample again: nothing to do";
+    EXPECT_EQ(renderer.samplesInOutput(), 2);
+
+    // The output is the mean of the samples: sample 1 alone (a fresh average) and the centre.
+    Renderer single(scene_, smallSettings());
+    single.renderFrame(camera, 1);
+    EXPECT_EQ(single.samplesInOutput(), 1);
+    const ImageF jittered = single.readHdr();
+    double largest = 0.0, differs = 0.0;
+    for (std::size_t i = 0; i < averaged.rgba.size(); ++i) {
+        const double mean = 0.5 * (double(centre.rgba[i]) + double(jittered.rgba[i]));
+        largest = std::max(largest, std::abs(double(averaged.rgba[i]) - mean));
+        differs = std::max(differs, std::abs(double(centre.rgba[i]) - double(jittered.rgba[i])));
+    }
+    EXPECT_LE(largest, 1e-6);
+    EXPECT_GT(differs, 1e-3) << "sample 1 must look at another point of the pixel than sample 0";
+
+    // Any other change starts a new average; so does a camera move.
+    RenderSettings s = renderer.settings();
+    s.display.exposureEV += 1.0;
+    renderer.setSettings(s);
+    renderer.renderFrame(camera, 2);
+    EXPECT_EQ(renderer.samplesInOutput(), 1);
+    renderer.renderFrame(camera, 3);
+    EXPECT_EQ(renderer.samplesInOutput(), 2);
+    renderer.renderFrame(moved(camera), 4);
+    EXPECT_EQ(renderer.samplesInOutput(), 1);
+}
+
 TEST_F(PassGraphTest, IncrementalFramesAreBitIdenticalToFreshOnes) {
     const Camera camera = scene_.cameras[0];
     Renderer incremental(scene_, smallSettings());

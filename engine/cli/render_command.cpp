@@ -13,6 +13,7 @@
 #include "pipeline/renderer.hpp"
 #include "pipeline/timings_report.hpp"
 #include "render/memory_budget.hpp"
+#include "render/pixel_samples.hpp"
 
 namespace vct::cli {
 namespace {
@@ -26,6 +27,7 @@ struct RenderOptions {
     int width = 1280;
     int height = 720;
     int frames = 1;
+    int samples = 1;
     bool fullFrames = false;
     std::string lightPath;
     std::string cameraPath;
@@ -50,6 +52,8 @@ std::vector<Light> orbit(const std::vector<Light>& lights, const Scene& scene, d
 
 void run(const RenderOptions& o) {
     if (o.frames < 1 || o.frames > 100000) fail("--frames ", o.frames, " is out of range; use 1..100000");
+    if (o.samples < 1 || o.samples > kMaxPixelSamples)
+        fail("--samples ", o.samples, " is out of range; use 1..", kMaxPixelSamples);
     // Check what the user can get wrong before the expensive steps.
     ensureWritable(o.out);
     if (!o.hdrOut.empty()) ensureWritable(o.hdrOut);
@@ -78,9 +82,9 @@ void run(const RenderOptions& o) {
     auto context = gl::createContext(backend);
     Renderer renderer(scene, settings);
     const std::vector<Light> startLights = renderer.lights();
+    Camera view = camera;
     for (int frame = 0; frame < o.frames; ++frame) {
         if (!o.lightPath.empty() && frame > 0) renderer.setLights(orbit(startLights, scene, double(frame) / o.frames));
-        Camera view = camera;
         if (!o.cameraPath.empty() && frame > 0) {
             // A small turn of the eye around the target's vertical axis: a typical interactive move.
             const double angle = 0.05 * frame;
@@ -89,6 +93,15 @@ void run(const RenderOptions& o) {
                                                   -std::sin(angle) * d.x + std::cos(angle) * d.z);
         }
         renderer.renderFrame(view);
+    }
+    // The last frame is the first sample (the pixel centres); the others look elsewhere in the
+    // pixel and re-run only the camera's passes. Each sample's timings are read as it finishes.
+    SampleTimings samples;
+    std::optional<gl::FrameTimings> lastTimings;
+    for (int sample = 0; sample < o.samples; ++sample) {
+        if (sample > 0) renderer.renderFrame(view, sample);
+        lastTimings = renderer.timer().waitForLatest();
+        samples.add(lastTimings);
     }
 
     const ImageF hdr = renderer.readHdr();
@@ -104,7 +117,8 @@ void run(const RenderOptions& o) {
         report.voxels = renderer.octree()->memory();
         if (logLevel() >= LogLevel::Info) std::printf("%s", formatVoxelMemory(*report.voxels).c_str());
     }
-    if (auto timings = renderer.timer().waitForLatest()) report.timings = *timings;
+    if (lastTimings) report.timings = *lastTimings;
+    report.samples = samples;
     if (logLevel() >= LogLevel::Info) std::printf("%s", formatTimingsTable(report).c_str());
     if (!o.timingsOut.empty()) writeTimingsJson(o.timingsOut, report);
     logInfo(concat("wrote ", o.out, o.hdrOut.empty() ? "" : " and " + o.hdrOut));
@@ -125,6 +139,10 @@ Run addRenderCommand(CLI::App& app) {
     command->add_option("--width", o.width, "image width in pixels")->capture_default_str();
     command->add_option("--height", o.height, "image height in pixels")->capture_default_str();
     command->add_option("--frames", o.frames, "render this many frames; timings are the last frame's")
+        ->capture_default_str();
+    command->add_option("--samples", o.samples,
+                        "average this many samples per pixel (anti-aliasing): the first at the pixel centre, the "
+                        "others jittered inside the pixel; only the camera's passes re-run per sample")
         ->capture_default_str();
     addRenderSettingsOptions(*command, o.render);
     command->add_option("--memory-budget", o.memoryBudgetMiB,

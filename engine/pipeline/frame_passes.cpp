@@ -121,12 +121,13 @@ void renderVoxelView(FrameResources& f, const FrameView& v) {
 void composite(FrameResources& f, const FrameView& v) {
     if (f.settings.view != ViewMode::Lit) {
         f.composite->render(*f.gbuffer, f.direct->radiance(), 0, v.transform, 1.0f, f.settings.display,
-                            f.voxelView->image(), f.settings.view == ViewMode::Radiance);
+                            v.samplesInAverage, f.voxelView->image(), f.settings.view == ViewMode::Radiance);
         return;
     }
     const GLuint indirect = f.settings.gi && f.coneTrace ? f.coneTrace->indirect() : 0;
     const float depthScale = float(glm::length(f.scene->worldBounds.size()));
-    f.composite->render(*f.gbuffer, f.direct->radiance(), indirect, v.transform, depthScale, f.settings.display);
+    f.composite->render(*f.gbuffer, f.direct->radiance(), indirect, v.transform, depthScale, f.settings.display,
+                        v.samplesInAverage);
 }
 
 using I = Input;

@@ -56,7 +56,8 @@ struct FrameResources {
 // The camera of the frame being rendered; absent when only view-independent passes run.
 struct FrameView {
     const Camera* camera = nullptr;
-    ViewTransform transform;
+    ViewTransform transform;  // jittered inside the pixel for samples after the first
+    int samplesInAverage = 1; // the output averages this many samples, this frame's included
 };
 
 }  // namespace vct

@@ -2,6 +2,7 @@
 
 #include "core/error.hpp"
 #include "gl/debug_group.hpp"
+#include "render/pixel_samples.hpp"
 
 namespace vct {
 
@@ -74,21 +75,33 @@ void Renderer::setScene(const Scene& scene) {
     bump(Input::Lights);
 }
 
-void Renderer::renderFrame(const Camera& camera) {
+void Renderer::renderFrame(const Camera& camera, int sample) {
     validateCamera(camera);
-    if (lastCamera_ != camera) bump(Input::Camera);
+    if (sample < 0) fail("sample index ", sample, " is negative; samples count from 0 (the pixel centre)");
+    const bool othersUnchanged = frame_.versions == versionsAfterLastFrame_ && samplesInOutput_ > 0;
+    const bool sameCamera = lastCamera_ == camera;
+    if (!sameCamera || sample != lastSample_) {
+        bump(Input::Camera);
+        const bool continues = othersUnchanged && sameCamera && sample == lastSample_ + 1;
+        samplesInOutput_ = continues ? samplesInOutput_ + 1 : 1;
+    } else if (!othersUnchanged) {
+        samplesInOutput_ = 1;  // the same sample again, but something else changed: a fresh average
+    }
     lastCamera_ = camera;
-    run(camera, {Resource::Output});
+    lastSample_ = sample;
+    run(camera, {Resource::Output}, pixelSampleOffset(sample));
+    versionsAfterLastFrame_ = frame_.versions;
 }
 
 void Renderer::buildOctree() { run(std::nullopt, {Resource::GeometryBricks}); }
 
-void Renderer::run(const std::optional<Camera>& camera, ResourceSet targets) {
+void Renderer::run(const std::optional<Camera>& camera, ResourceSet targets, glm::dvec2 jitter) {
     if (frame_.settings.fullFrames) bump(Input::Geometry);
     FrameView view;
     if (camera) {
         view.camera = &*camera;
-        view.transform = cameraView(*camera, *frame_.scene, frame_.settings.width, frame_.settings.height);
+        view.transform = cameraView(*camera, *frame_.scene, frame_.settings.width, frame_.settings.height, jitter);
+        view.samplesInAverage = samplesInOutput_;
     }
     const std::vector<PassRun> plan = graph_.plan(frame_.versions, frame_.settings, targets);
     timer_.beginFrame();

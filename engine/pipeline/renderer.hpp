@@ -34,7 +34,13 @@ public:
     // A different scene (or the same one, edited): everything is rebuilt.
     void setScene(const Scene& scene);
 
-    void renderFrame(const Camera& camera);
+    // `sample` picks where in each pixel this frame looks (render/pixel_samples.hpp; 0 = the
+    // centre). The output holds the average of the samples since the last restart: sample k > 0
+    // right after sample k − 1 of the same camera, with nothing else changed, adds to the average;
+    // any other frame restarts it with its own sample.
+    void renderFrame(const Camera& camera, int sample = 0);
+    // How many samples the output averages.
+    int samplesInOutput() const { return samplesInOutput_; }
     // Only the passes that build the octree (voxelize … bricks_mip), for tools that inspect it.
     void buildOctree();
     // Every pass of the last frame, ran or skipped, with the reason.
@@ -54,7 +60,7 @@ public:
     const std::vector<Light>& lights() const { return frame_.lights; }
 
 private:
-    void run(const std::optional<Camera>& camera, ResourceSet targets);
+    void run(const std::optional<Camera>& camera, ResourceSet targets, glm::dvec2 jitter = glm::dvec2(0.0));
     void createSizedTargets();
     void bump(Input input) { ++frame_.versions[std::size_t(input)]; }
 
@@ -62,6 +68,8 @@ private:
     PassGraph graph_;
     gl::GpuTimer timer_;
     std::optional<Camera> lastCamera_;
+    int lastSample_ = 0, samplesInOutput_ = 0;
+    InputVersions versionsAfterLastFrame_{};
     std::vector<PassRun> lastFrame_;
 };
 

@@ -27,6 +27,15 @@ std::string formatTimingsTable(const TimingsReport& report) {
     std::snprintf(line, sizeof line, "%-18s %10.3f %10.3f   (%s, %dx%d)\n", "total", report.timings.totalGpuMs,
                   report.timings.totalCpuMs, report.context.renderer.c_str(), report.width, report.height);
     out += line;
+    const SampleTimings& samples = report.samples;
+    if (samples.count > 1) {  // the table above is the last sample's frame
+        std::snprintf(line, sizeof line, "%-18s %10.3f %10.3f   (%d samples per pixel)\n", "all samples",
+                      samples.totalGpuMs, samples.totalCpuMs, samples.count);
+        out += line;
+        std::snprintf(line, sizeof line, "%-18s %10.3f %10.3f\n", "each extra sample", samples.perSampleGpuMs(),
+                      samples.perSampleCpuMs());
+        out += line;
+    }
     return out;
 }
 
@@ -57,6 +66,14 @@ void writeTimingsJson(const std::filesystem::path& path, const TimingsReport& re
                                  {"stage", stageName(declaration(run.pass).stage)},
                                  {"ran", run.ran},
                                  {"reason", run.reason}});
+    const SampleTimings& samples = report.samples;
+    json["samples"] = {{"count", samples.count},
+                       {"first_gpu_ms", samples.firstGpuMs},
+                       {"first_cpu_ms", samples.firstCpuMs},
+                       {"per_sample_gpu_ms", samples.perSampleGpuMs()},
+                       {"per_sample_cpu_ms", samples.perSampleCpuMs()},
+                       {"total_gpu_ms", samples.totalGpuMs},
+                       {"total_cpu_ms", samples.totalCpuMs}};
     const FrameStatistics& s = report.statistics;
     json["statistics"] = {{"light_views_rendered", s.lightViewsRendered},
                           {"light_views", s.lightViewsTotal},

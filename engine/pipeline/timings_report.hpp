@@ -14,6 +14,24 @@
 
 namespace vct {
 
+// The samples of an accumulated frame (`vct render --samples N`): the first is a whole frame,
+// each further one re-runs only the passes that depend on the camera.
+struct SampleTimings {
+    int count = 0;
+    double firstGpuMs = 0.0, firstCpuMs = 0.0;  // the first sample's frame
+    double totalGpuMs = 0.0, totalCpuMs = 0.0;  // every sample's frame
+    void add(const std::optional<gl::FrameTimings>& frame) {
+        const double gpu = frame ? frame->totalGpuMs : 0.0, cpu = frame ? frame->totalCpuMs : 0.0;
+        if (count == 0) firstGpuMs = gpu, firstCpuMs = cpu;
+        totalGpuMs += gpu;
+        totalCpuMs += cpu;
+        ++count;
+    }
+    // Mean cost of one sample after the first (0 with a single sample).
+    double perSampleGpuMs() const { return count > 1 ? (totalGpuMs - firstGpuMs) / (count - 1) : 0.0; }
+    double perSampleCpuMs() const { return count > 1 ? (totalCpuMs - firstCpuMs) / (count - 1) : 0.0; }
+};
+
 struct TimingsReport {
     gl::ContextInfo context;
     int width = 0;
@@ -23,6 +41,7 @@ struct TimingsReport {
     std::optional<VoxelMemoryReport> voxels;
     std::vector<PassRun> graph;
     FrameStatistics statistics;
+    SampleTimings samples;
 };
 
 std::string formatTimingsTable(const TimingsReport& report);

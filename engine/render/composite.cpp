@@ -36,11 +36,13 @@ Composite::Composite(int width, int height)
     : width_(width),
       height_(height),
       hdr_(gl::createTexture2D(GL_RGBA32F, width, height, 1, "composite hdr")),
+      hdrSum_(gl::createTexture2D(GL_RGBA32F, width, height, 1, "composite hdr sum")),
       ldr_(gl::createTexture2D(GL_RGBA8, width, height, 1, "composite ldr")),
       program_(gl::buildProgram({{GL_COMPUTE_SHADER, "composite.comp"}})) {}
 
 void Composite::render(const GBuffer& gbuffer, GLuint directRadiance, GLuint indirect, const ViewTransform& camera,
-                       float depthScale, const DisplaySettings& display, GLuint debugImage, bool toneMapDebugImage) {
+                       float depthScale, const DisplaySettings& display, int samplesInAverage, GLuint debugImage,
+                       bool toneMapDebugImage) {
     gl::ComputeCall(program_)
         .texture(gl::TEXTURE_GBUFFER_ALBEDO, gbuffer.albedo())
         .texture(gl::TEXTURE_GBUFFER_NORMAL, gbuffer.normal())
@@ -51,6 +53,8 @@ void Composite::render(const GBuffer& gbuffer, GLuint directRadiance, GLuint ind
         .texture(gl::TEXTURE_INDIRECT, indirect)
         .image(gl::IMAGE_HDR, hdr_.id(), GL_WRITE_ONLY, GL_RGBA32F)
         .image(gl::IMAGE_LDR, ldr_.id(), GL_WRITE_ONLY, GL_RGBA8)
+        .image(gl::IMAGE_HDR_SUM, hdrSum_.id(), GL_READ_WRITE, GL_RGBA32F)
+        .uniform("uSamplesInAverage", samplesInAverage)
         .uniform("uHasIndirect", indirect != 0 ? 1 : 0)
         .uniform("uGiScale", display.giScale)
         .uniform("uShowDebugImage", debugImage == 0 ? 0 : (toneMapDebugImage ? 2 : 1))

@@ -6,6 +6,7 @@
 #include <cstring>
 
 #include "core/error.hpp"
+#include "render/light_view.hpp"
 #include "voxel/voxel_grid.hpp"
 #include "voxel/voxelize.hpp"
 
@@ -55,11 +56,13 @@ std::size_t estimateVoxelBytes(const Scene& scene, int levels, bool radiance) {
 
 MemoryEstimate estimate(const Scene& scene, const MemoryRequest& r) {
     MemoryEstimate e;
-    // G-buffer 52, direct 16, indirect 16, composite 20, voxel view 16 bytes per pixel.
-    e.imageTargets = std::size_t(r.width) * std::size_t(r.height) * (52 + 16 + 16 + 20 + 16);
+    // G-buffer 52, direct 16, indirect 16, composite 36 (average, sum, 8-bit), voxel view 16 bytes per pixel.
+    e.imageTargets = std::size_t(r.width) * std::size_t(r.height) * (52 + 16 + 16 + 36 + 16);
     // Depth 4, position 16, normal 8, flux 16 bytes per texel, one map per light.
+    std::size_t maps = 0;  // a point light has six (a cube), the others one
+    for (const Light& light : scene.lights) maps += std::size_t(lightViewCount(light));
     e.lightViewMaps = std::size_t(r.lightViewResolution) * std::size_t(r.lightViewResolution) * 44 *
-                      std::max<std::size_t>(scene.lights.size(), 1);
+                      std::max<std::size_t>(maps, 1);
     e.sceneData = scene.vertices.size() * sizeof(Vertex) + scene.indices.size() * 4 + scene.materials.size() * 32;
     for (const Texture& t : scene.textures) e.sceneData += std::size_t(t.width) * std::size_t(t.height) * 4 * 4 / 3;
     if (r.octree) e.voxels = estimateVoxelBytes(scene, r.voxelLevels, r.radiance);

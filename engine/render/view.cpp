@@ -38,7 +38,7 @@ ViewTransform finish(const glm::dmat4& view, const glm::dmat4& projection, const
 
 }  // namespace
 
-ViewTransform cameraView(const Camera& camera, const Scene& scene, int width, int height) {
+ViewTransform cameraView(const Camera& camera, const Scene& scene, int width, int height, glm::dvec2 jitter) {
     const glm::dvec3 eye = camera.eye - scene.origin;
     const glm::dvec3 target = camera.target - scene.origin;
     const glm::dvec3 forward = glm::normalize(target - eye);
@@ -54,6 +54,9 @@ ViewTransform cameraView(const Camera& camera, const Scene& scene, int width, in
     projection[1][1] = f;
     projection[2][3] = -1.0;
     projection[3][2] = nearPlane;
+    // A shear that moves the image by −jitter: ndc' = ndc − projection[2].xy, since w = −z_view.
+    projection[2][0] = 2.0 * jitter.x / width;
+    projection[2][1] = -2.0 * jitter.y / height;  // image y runs down, ndc y up
     return finish(view, projection, eye, forward, width, height);
 }
 

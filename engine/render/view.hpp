@@ -23,8 +23,11 @@ struct ViewTransform {
     int height = 0;
 };
 
-// Perspective camera with an infinite far plane (reversed depth).
-ViewTransform cameraView(const Camera& camera, const Scene& scene, int width, int height);
+// Perspective camera with an infinite far plane (reversed depth). `jitter` moves the point each
+// pixel samples away from its centre, in pixels (x right, y down, within ±½): the image position
+// (x + ½ + jitter.x, y + ½ + jitter.y) of reference/camera_rays.hpp is what pixel (x, y) shows.
+ViewTransform cameraView(const Camera& camera, const Scene& scene, int width, int height,
+                         glm::dvec2 jitter = glm::dvec2(0.0));
 
 // Light-view projection: orthographic over the scene's bounding sphere for a directional light,
 // perspective with the outer cone angle for a spot. `texelFootprint` is what one texel covers:

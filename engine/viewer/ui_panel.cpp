@@ -35,6 +35,7 @@ void frameSection(const PanelInputs& in) {
                 in.idle ? " idle" : "", in.windowWidth, in.windowHeight, in.renderer.settings().width,
                 in.renderer.settings().height);
     ImGui::TextDisabled("%s", in.context.renderer.c_str());
+    ImGui::Text("samples per pixel %d", in.renderer.samplesInOutput());
     char overlay[64];
     const float gpu = stats.gpuHistory().empty() ? 0.0f : stats.gpuHistory().back();
     std::snprintf(overlay, sizeof overlay, "GPU %.2f ms (last %zu frames)", gpu, stats.gpuHistory().size());
@@ -175,6 +176,9 @@ bool comboOf(const char* label, int& index, const char* const items[], int count
 void settingsSection(ViewerState& state, bool& changed) {
     if (!ImGui::CollapsingHeader("Settings")) return;
     RenderSettings& s = state.settings;
+    // Not a render setting: how many still frames the viewer averages (no restart when it changes).
+    ImGui::SliderInt("accumulate up to (samples per pixel)", &state.accumulateSamples, 1, 256, "%d",
+                     ImGuiSliderFlags_AlwaysClamp);
     changed |= ImGui::Checkbox("GI (G)", &s.gi);
     ImGui::SameLine();
     changed |= ImGui::Checkbox("photons (P)", &s.photons);

@@ -226,17 +226,25 @@ private:
                 reject(e);
             }
         }
+        const bool lightsChanged = lightsDirty_;
         if (lightsDirty_) {
             lightsDirty_ = false;
             renderer_->setLights(state_.lights);
         }
+        // Progressive anti-aliasing: a still picture gathers one more jittered sample per frame
+        // up to the limit; any change goes back to the pixel centres (sample 0).
+        const Camera camera = controller_.camera();
+        const bool restart = changed || lightsChanged || lastCamera_ != camera;
+        sample_ = restart ? 0 : std::min(sample_ + 1, std::max(state_.accumulateSamples, 1) - 1);
+        lastCamera_ = camera;
         try {
-            renderer_->renderFrame(controller_.camera());
+            renderer_->renderFrame(camera, sample_);
             good_ = renderer_->settings();
         } catch (const Error& e) {
             if (!changed) throw;  // not caused by an edit: nothing to go back to
             reject(e);
-            renderer_->renderFrame(controller_.camera());
+            sample_ = 0;
+            renderer_->renderFrame(camera, sample_);
         }
         while (auto timings = renderer_->timer().poll()) stats_.addTimings(*timings);
         const auto& passes = renderer_->lastFrame();
@@ -315,6 +323,8 @@ private:
     RenderSettings good_;  // the last settings a frame rendered with
     bool settingsDirty_ = false, lightsDirty_ = false;
     bool idle_ = false;  // the last frame ran no pass (the picture cannot have changed)
+    std::optional<Camera> lastCamera_;
+    int sample_ = 0;     // the sample of the last frame (render/pixel_samples.hpp)
     std::unique_ptr<Renderer> renderer_;
     std::unique_ptr<Presenter> presenter_;
     FrameStats stats_;

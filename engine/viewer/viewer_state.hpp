@@ -13,6 +13,9 @@ struct ViewerState {
     RenderSettings settings;      // width/height follow the window × renderScale
     std::vector<Light> lights;
     float renderScale = 1.0f;     // render resolution / window resolution
+    // While nothing changes, frames jittered inside the pixel are averaged, up to this many
+    // (1 = off); any change starts again from one sample.
+    int accumulateSamples = 64;
     bool panelVisible = true;
     int cameraPreset = -1;        // set by the panel: jump to Scene::cameras[i] (-1 = no request)
     bool screenshotRequested = false;

@@ -1,0 +1,26 @@
+#pragma once
+// Where in its pixel each sample of an accumulated frame looks (`vct render --samples N`, the
+// viewer's progressive refinement). Sample 0 is the pixel centre, so a one-sample frame is the
+// plain frame; sample k > 0 is the k-th point of the Halton (2, 3) sequence, a low-discrepancy
+// set: every prefix of it covers the pixel evenly, so the average converges to the pixel's area
+// integral (what the reference renderer computes) at any sample count, not only at squares.
+#include <glm/glm.hpp>
+
+namespace vct {
+
+constexpr int kMaxPixelSamples = 65536;  // far beyond where a float sum of samples stops converging
+
+// Radical inverse of `index` in `base`: its digits mirrored behind the point.
+inline double radicalInverse(unsigned index, unsigned base) {
+    double inverse = 0.0, digitWeight = 1.0 / base;
+    for (; index > 0; index /= base, digitWeight /= base) inverse += double(index % base) * digitWeight;
+    return inverse;
+}
+
+// Offset from the pixel centre in pixels, each component in [−½, ½).
+inline glm::dvec2 pixelSampleOffset(int sample) {
+    if (sample <= 0) return glm::dvec2(0.0);
+    return {radicalInverse(unsigned(sample), 2) - 0.5, radicalInverse(unsigned(sample), 3) - 0.5};
+}
+
+}  // namespace vct

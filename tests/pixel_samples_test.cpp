@@ -1,0 +1,82 @@
+// Anti-aliased, accumulated frames (`vct render --samples N`): where the samples look inside the
+// pixel, and that averaging them brings the engine's direct light to the reference's, which
+// integrates over the pixel's area.
+#include <cmath>
+#include <set>
+
+#include "core/image.hpp"
+#include "render/pixel_samples.hpp"
+#include "test_util.hpp"
+
+using namespace vct;
+
+namespace {
+
+double rmse(const ImageF& a, const ImageF& b) {
+    double sum = 0.0;
+    std::size_t n = 0;
+    for (std::size_t i = 0; i < a.rgba.size(); i += 4)
+        for (int c = 0; c < 3; ++c, ++n) sum += std::pow(double(a.rgba[i + c]) - double(b.rgba[i + c]), 2);
+    return std::sqrt(sum / double(n));
+}
+
+double mean(const ImageF& image) {
+    double sum = 0.0;
+    for (std::size_t i = 0; i < image.rgba.size(); i += 4) sum += image.rgba[i] + image.rgba[i + 1] + image.rgba[i + 2];
+    return sum / (3.0 * double(image.width) * image.height);
+}
+
+}  // namespace
+
+TEST(PixelSamples, FirstIsTheCentreAndTheOthersSpreadOverThePixel) {
+    EXPECT_EQ(pixelSampleOffset(0), glm::dvec2(0.0));
+    // Every prefix of the sequence covers the pixel evenly: each quarter of the pixel gets its
+    // share of the first 16 samples, and their mean is near the centre.
+    for (int count : {4, 16, 64}) {
+        glm::dvec2 sum(0.0);
+        int quarter[4] = {0, 0, 0, 0};
+        std::set<std::pair<double, double>> distinct;
+        for (int k = 0; k < count; ++k) {
+            const glm::dvec2 o = pixelSampleOffset(k);
+            ASSERT_GE(o.x, -0.5);
+            ASSERT_LT(o.x, 0.5);
+            ASSERT_GE(o.y, -0.5);
+            ASSERT_LT(o.y, 0.5);
+            sum += o;
+            ++quarter[(o.x >= 0.0 ? 1 : 0) + (o.y >= 0.0 ? 2 : 0)];
+            distinct.insert({o.x, o.y});
+        }
+        EXPECT_EQ(int(distinct.size()), count);
+        EXPECT_LT(std::abs(sum.x / count), 0.1) << count;
+        EXPECT_LT(std::abs(sum.y / count), 0.1) << count;
+        for (int q : quarter) EXPECT_NEAR(q, count / 4, std::max(1, count / 16)) << count << " samples";
+    }
+}
+
+TEST(PixelSamples, SixteenSamplesBringTheDirectLightToTheReferences) {
+    // Cornell 96x72: the reference integrates every pixel's area; one sample at the pixel centre
+    // misses that on every edge and shadow boundary, 16 jittered samples average it.
+    const auto dir = test::testDir();
+    const std::string view = "--scene cornell --width 96 --height 72";
+    const auto reference = dir / "reference.pfm";
+    ASSERT_EQ(test::runVct("reference -q " + view + " --bounces 0 --spp 256 -o " + reference.string()).exitCode, 0);
+    const ImageF truth = readHdrImage(reference);
+    double error[2] = {0, 0}, ratio[2] = {0, 0};
+    const int samples[2] = {1, 16};
+    for (int i = 0; i < 2; ++i) {
+        const auto out = dir / ("direct" + std::to_string(samples[i]));
+        const test::CommandResult r = test::runVct("render -q " + view + " --aov direct --samples " +
+                                                   std::to_string(samples[i]) + " --out " + out.string() +
+                                                   ".png --hdr-out " + out.string() + ".pfm");
+        ASSERT_EQ(r.exitCode, 0) << r.output;
+        const ImageF direct = readHdrImage(out.string() + ".pfm");
+        error[i] = rmse(direct, truth);
+        ratio[i] = mean(direct) / mean(truth);
+    }
+    std::printf("[ samples  ] Cornell direct light against the reference: RMSE %.4f with 1 sample, %.4f with 16; "
+                "mean %.4f and %.4f of the reference's\n",
+                error[0], error[1], ratio[0], ratio[1]);
+    EXPECT_LT(error[1], 0.4 * error[0]);
+    EXPECT_LT(error[1], 0.008);
+    EXPECT_NEAR(ratio[1], 1.0, 0.01);
+}
