@@ -314,14 +314,15 @@ void appendVertices(const aiMesh& mesh, const InstanceTransform& transform, Worl
     const aiVector3D* uvs1 = mesh.mTextureCoords[1];
     const aiColor4D* colours = mesh.mColors[0];
     const std::size_t before = g.positions.size();
-    if (uvs1 && g.uvs1.empty()) g.uvs1.assign(before, glm::dvec2(0.0));
-    if (colours && g.colors.empty()) g.colors.assign(before, glm::vec3(1.0f));
+    const bool keepUvs1 = uvs1 || !g.uvs1.empty(), keepColours = colours || !g.colors.empty();
+    if (keepUvs1) g.uvs1.resize(before, glm::dvec2(0.0));
+    if (keepColours) g.colors.resize(before, glm::vec3(1.0f));
     for (unsigned v = 0; v < mesh.mNumVertices; ++v) {
         // glTF COLOR_0 is linear RGB(A) and multiplies the base colour. Its alpha is not used:
         // Assimp 5.2 reports alpha 0 for RGB colours, so it cannot be told from a real 0.
-        if (!g.colors.empty())
+        if (keepColours)
             g.colors.push_back(colours ? glm::vec3(colours[v].r, colours[v].g, colours[v].b) : glm::vec3(1.0f));
-        if (!g.uvs1.empty()) g.uvs1.push_back(uvs1 ? glm::dvec2(uvs1[v].x, uvs1[v].y) : glm::dvec2(0.0));
+        if (keepUvs1) g.uvs1.push_back(uvs1 ? glm::dvec2(uvs1[v].x, uvs1[v].y) : glm::dvec2(0.0));
         g.positions.push_back(transformPoint(transform.world, toDouble(mesh.mVertices[v])));
         g.normals.push_back(mesh.mNormals ? transform.normalMatrix * toDouble(mesh.mNormals[v])
                                           : glm::dvec3(0.0));
