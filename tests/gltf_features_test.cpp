@@ -114,13 +114,15 @@ TEST(GltfFeatures, VertexColoursMultiplyTheBaseColourInEngineAndReference) {
         const double centreX = ((p.x + 0.5) / 64.0 * 2.0 - 1.0) * half;
         const double t = 0.5 * (centreX + 1.0);
         const glm::dvec3 expected = 0.8 * glm::mix(glm::dvec3(left), glm::dvec3(right), t);
-        expectColour(r.engineAlbedo, p, expected, 0.01, "engine albedo");
-        expectColour(r.reference, p, expected, 0.01, "reference radiance");
+        // Measured: within 3e-4 (engine) and 6e-4 (reference, 4 samples across the ramp).
+        expectColour(r.engineAlbedo, p, expected, 0.003, "engine albedo");
+        expectColour(r.reference, p, expected, 0.003, "reference radiance");
     }
 }
 
 // The voxels (octree albedo) and the light-view map (photons: the octree's radiance) carry the
-// vertex colour too: a quad that is red on the left and blue on the right stays so in both views.
+// vertex colour too: a quad whose colour runs from red on the left to blue on the right keeps
+// that ramp in both views.
 TEST(GltfFeatures, VertexColoursReachVoxelsAndPhotons) {
     const fs::path dir = vct::test::testDir();
     GltfQuad quad;
@@ -135,14 +137,15 @@ TEST(GltfFeatures, VertexColoursReachVoxelsAndPhotons) {
                                               " --out " + (dir / "view.png").string());
         ASSERT_EQ(result.exitCode, 0) << result.output;
         const ImageF image = vct::readHdrImage(out);
-        const glm::dvec3 l = pixel(image, vct::test::quadPixel(-0.8, 0.0));
-        const glm::dvec3 r = pixel(image, vct::test::quadPixel(0.8, 0.0));
-        EXPECT_GT(l.x, 0.0) << view;
-        EXPECT_GT(r.z, 0.0) << view;
-        // Near each edge the colour is at least 85 % of the edge vertex's (the voxels there
-        // average over a voxel's width of the ramp: 1/32 of the scene at 2^5).
-        EXPECT_GT(l.x / (l.x + l.z), 0.85) << view << ": left " << text(l);
-        EXPECT_GT(r.z / (r.x + r.z), 0.85) << view << ": right " << text(r);
+        // The share of red, r / (r + b), follows the vertex colours' ramp 1 − (x + 1)/2 within
+        // 0.03 (measured 0.898, 0.494, 0.102 for the voxels and 0.896, 0.483, 0.104 for the
+        // radiance at x = −0.8, 0, 0.8): each voxel averages 1/32 of the quad's width.
+        for (double x : {-0.8, 0.0, 0.8}) {
+            const glm::dvec3 c = pixel(image, vct::test::quadPixel(x, 0.0));
+            ASSERT_GT(c.x + c.z, 0.0) << view << " at x = " << x;
+            EXPECT_NEAR(c.x / (c.x + c.z), 1.0 - 0.5 * (x + 1.0), 0.03) << view << " at x = " << x << ": " << text(c);
+            EXPECT_LT(c.y, 1e-6 * (c.x + c.z)) << view << ": no green in the vertex colours";
+        }
     }
 }
 
@@ -183,8 +186,9 @@ TEST_P(GltfWrapModes, SampleOutsideTheUnitSquareAsTheModeSays) {
             const glm::ivec2 p = vct::test::quadPixel(-1.0 + 2.0 * (u + 0.5) / 2.5, 1.0 - 2.0 * (v + 0.5) / 2.5);
             const glm::dvec3 expected = quadrantColour(wrap(u), wrap(v));
             const std::string where = " (u, v) = (" + std::to_string(u) + ", " + std::to_string(v) + ")";
-            expectColour(r.engineAlbedo, p, expected, 0.02, "engine albedo" + where);
-            expectColour(r.reference, p, expected, 0.02, "reference radiance" + where);
+            // Measured: exact (0 and 1) in both; the tolerance only allows for rounding.
+            expectColour(r.engineAlbedo, p, expected, 0.002, "engine albedo" + where);
+            expectColour(r.reference, p, expected, 0.002, "reference radiance" + where);
         }
 }
 
@@ -228,8 +232,9 @@ TEST(GltfFeatures, TextureTransformRotatesOffsetsAndPicksTheUvSet) {
             const glm::ivec2 p = vct::test::quadPixel(2.0 * u - 1.0, 1.0 - 2.0 * v);
             const glm::dvec3 expected = quadrantColour(v, 1.0 - u);
             const std::string where = " (u, v) = (" + std::to_string(u) + ", " + std::to_string(v) + ")";
-            expectColour(r.engineAlbedo, p, expected, 0.02, "engine albedo" + where);
-            expectColour(r.reference, p, expected, 0.02, "reference radiance" + where);
+            // Measured: exact (0 and 1) in both; the tolerance only allows for rounding.
+            expectColour(r.engineAlbedo, p, expected, 0.002, "engine albedo" + where);
+            expectColour(r.reference, p, expected, 0.002, "reference radiance" + where);
         }
 }
 
@@ -306,4 +311,18 @@ TEST(GltfFeatures, MissingBufferNamesTheFile) {
               std::string::npos)
         << message;
     EXPECT_EQ(message.find("is expected"), std::string::npos) << message;
+}
+
+// KHR_materials_emissive_strength (which Assimp 5.2 does not read) multiplies the emissive
+// colour: W/(m²·sr) = emissiveFactor × emissiveStrength.
+TEST(GltfFeatures, EmissiveStrengthMultipliesTheEmissiveColour) {
+    const fs::path dir = vct::test::testDir();
+    GltfQuad quad;
+    quad.material = {{"emissiveFactor", {1.0, 0.5, 0.25}},
+                     {"extensions", {{"KHR_materials_emissive_strength", {{"emissiveStrength", 4.0}}}}},
+                     {"doubleSided", true}};
+    quad.top = {{"extensionsUsed", {"KHR_materials_emissive_strength"}}};
+    const vct::Scene scene = vct::loadModelFile(vct::test::writeGltfQuad(dir, "glowing", quad));
+    EXPECT_EQ(scene.materials.at(0).emissive, glm::vec3(4.0f, 2.0f, 1.0f));
+    EXPECT_TRUE(scene.report.unsupportedFeatures.empty());
 }
