@@ -275,20 +275,24 @@ TEST(GltfFeatures, UsedUnknownExtensionIsWarnedOnce) {
     EXPECT_EQ(result.output.find("single-sided"), std::string::npos) << result.output;
 }
 
-// Skins, morph targets, animations and single-sided materials are named in the load report,
+// Skins, morph targets, animations, BLEND and single-sided materials are named in the load report,
 // one line each (the JSON alone decides; Assimp is not involved).
 TEST(GltfFeatures, DroppedFeaturesAreReported) {
     const nlohmann::json gltf = {
         {"skins", {{{"joints", {0}}}}},
         {"animations", {nlohmann::json::object(), nlohmann::json::object()}},
         {"meshes", {{{"primitives", {{{"targets", {{{"POSITION", 1}}}}}, nlohmann::json::object()}}}}},
-        {"materials", {{{"doubleSided", true}}, nlohmann::json::object(), {{"doubleSided", false}}}}};
+        {"materials", {{{"doubleSided", true}, {"alphaMode", "BLEND"}, {"name", "glass"}},
+                       nlohmann::json::object(),
+                       {{"doubleSided", false}, {"alphaMode", "BLEND"}}}}};
     vct::LoadReport report;
     vct::reportUnsupportedGltfFeatures(gltf, "model.gltf", report);
     const std::vector<std::string> expected = {
         "1 skin: skinned meshes are drawn at their rest pose",
         "1 primitive with morph targets: drawn without them (base shape)",
         "2 animations: not played (static scene)",
+        "2 materials with alphaMode BLEND ('glass', 'material 2'): drawn as MASK with cutoff 0.5 (no blending in the "
+        "voxel pipeline)",
         "2 of 3 materials single-sided (doubleSided false): drawn two-sided, like every vct surface"};
     EXPECT_EQ(report.unsupportedFeatures, expected);
 }

@@ -38,11 +38,14 @@ private:
         float baseAlpha = 1.0f;
         glm::vec3 emissive{0.0f};
         float alphaCutoff = -1.0f;  // negative: opaque
-        int texture = -1;   // index into textures_, −1 none
-        int texCoordSet = 0;             // TextureMapping of the base-colour texture
+        int texture = -1;           // index into textures_, −1 none
+        // The base-colour texture's TextureMapping: UV set, transform, and the sampler object of
+        // its wrap modes (0: the texture's own settings, repeat).
+        int texCoordSet = 0;
         glm::mat3 uvTransform{1.0f};
-        GLuint sampler = 0;              // wrap modes; 0: the texture's own (repeat)
+        GLuint sampler = 0;
     };
+    // The sampler object of a wrap pair, made on first use; 0 for repeat/repeat.
     GLuint samplerFor(TextureWrap wrapS, TextureWrap wrapT);
 
     gl::VertexArray vertexArray_;

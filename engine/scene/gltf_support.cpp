@@ -46,6 +46,24 @@ std::size_t singleSidedMaterials(const nlohmann::json& gltf) {
     return n;
 }
 
+// "3 materials with alphaMode BLEND ('glass', 'water', 'leaves')": at most 5 names.
+std::string blendedMaterials(const nlohmann::json& gltf) {
+    std::size_t n = 0;
+    std::string names;
+    const nlohmann::json& materials = gltfArray(gltf, "materials");
+    for (std::size_t i = 0; i < materials.size(); ++i) {
+        const nlohmann::json* mode = gltfMember(materials[i], "alphaMode");
+        if (!mode || !mode->is_string() || mode->get<std::string>() != "BLEND") continue;
+        const nlohmann::json* name = gltfMember(materials[i], "name");
+        if (++n <= 5)
+            names += (names.empty() ? "'" : ", '") +
+                     (name && name->is_string() ? name->get<std::string>() : concat("material ", i)) + "'";
+    }
+    if (n == 0) return {};
+    return concat(n, n > 1 ? " materials" : " material", " with alphaMode BLEND (", names, n > 5 ? ", …" : "",
+                  "): drawn as MASK with cutoff 0.5 (no blending in the voxel pipeline)");
+}
+
 }  // namespace
 
 const std::vector<std::string>& supportedGltfExtensions() {
@@ -82,6 +100,7 @@ void reportUnsupportedGltfFeatures(const nlohmann::json& gltf, const std::string
                                " with morph targets: drawn without them (base shape)"));
     if (const std::size_t animations = count(gltf, "animations"))
         lines.push_back(concat(animations, " animation", animations > 1 ? "s" : "", ": not played (static scene)"));
+    if (std::string blend = blendedMaterials(gltf); !blend.empty()) lines.push_back(blend);
     if (const std::size_t single = singleSidedMaterials(gltf))
         lines.push_back(concat(single, " of ", count(gltf, "materials"),
                                " materials single-sided (doubleSided false): drawn two-sided, like every vct surface"));

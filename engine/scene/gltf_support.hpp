@@ -7,10 +7,10 @@
 //     the extensions named;
 //   * extensionsUsed naming ones it does not implement: one warning listing them (the file still
 //     renders, without what they add);
-//   * skins and morph targets (drawn at rest pose), animations (not played), single-sided
-//     materials (drawn two-sided: voxels and photons have no side, and the reference must see the
-//     same scene): one line each in LoadReport::unsupportedFeatures, logged once as a warning.
-//     Alpha mode BLEND is reported per material by material_import.cpp.
+//   * skins and morph targets (drawn at rest pose), animations (not played), alpha mode BLEND
+//     (drawn as MASK), single-sided materials (drawn two-sided: voxels and photons have no side,
+//     and the reference must see the same scene): one line each in
+//     LoadReport::unsupportedFeatures, logged once as a warning.
 #include <string>
 #include <vector>
 

@@ -167,11 +167,9 @@ void applyGltfAlphaMode(const aiMaterial& m, const std::string& mode, const Mate
         material.alphaCutoff = std::clamp(cutoff, 0.0f, 1.0f);
     } else if (mode == "BLEND") {
         // No blending in a voxel GI pipeline: see-through parts become holes, the rest is solid.
+        // Reported once per file, with the materials named, in the load report (gltf_support.cpp).
         material.alphaMode = AlphaMode::Mask;
         material.alphaCutoff = 0.5f;
-        logWarnOnce("blend:" + material.name,
-                    concat("material '", material.name,
-                           "': alphaMode BLEND is not supported; drawn as MASK with cutoff 0.5"));
     }
     if (base.image) material.baseColorTexture = library.use(base.source.key);
 }
