@@ -238,21 +238,46 @@ TEST(GltfFeatures, TextureTransformRotatesOffsetsAndPicksTheUvSet) {
         }
 }
 
-// extensionsRequired with an extension vct does not implement: refused, named, no image.
+namespace {
+
+// The same JSON as a GLB (the JSON chunk alone: the quad's buffer stays a data URI).
+fs::path asGlb(const fs::path& gltf) {
+    std::ifstream in(gltf, std::ios::binary);
+    std::string json((std::istreambuf_iterator<char>(in)), {});
+    while (json.size() % 4) json += ' ';
+    std::string glb;
+    auto u32 = [&](std::uint32_t v) { glb.append(reinterpret_cast<const char*>(&v), 4); };
+    u32(0x46546C67u), u32(2), u32(std::uint32_t(12 + 8 + json.size()));
+    u32(std::uint32_t(json.size())), u32(0x4E4F534Au);
+    glb += json;
+    fs::path path = gltf;
+    path.replace_extension(".glb");
+    std::ofstream(path, std::ios::binary) << glb;
+    return path;
+}
+
+}  // namespace
+
+// extensionsRequired with an extension vct does not implement: refused, named, no image; in a
+// .gltf and in a .glb alike.
 TEST(GltfFeatures, RequiredUnknownExtensionIsRefused) {
     const fs::path dir = vct::test::testDir();
     GltfQuad quad;
     quad.top = {{"extensionsUsed", {"KHR_texture_basisu", "KHR_lights_punctual"}},
                 {"extensionsRequired", {"KHR_texture_basisu", "KHR_lights_punctual"}}};
-    const fs::path model = vct::test::writeGltfQuad(dir, "basisu", quad);
-    const fs::path out = dir / "out.png";
-    const auto result = vct::test::runVct("render --scene " + model.string() + " --out " + out.string());
-    EXPECT_EQ(result.exitCode, 1) << result.output;
-    // Only the unsupported one is named as missing (KHR_lights_punctual is supported).
-    EXPECT_NE(result.output.find("requires the glTF extension KHR_texture_basisu, which vct does not implement"),
-              std::string::npos)
-        << result.output;
-    EXPECT_FALSE(fs::exists(out));
+    const fs::path gltf = vct::test::writeGltfQuad(dir, "basisu", quad);
+    for (const fs::path& model : {gltf, asGlb(gltf)}) {
+        const fs::path out = dir / "out.png";
+        const auto result = vct::test::runVct("render --scene " + model.string() + " --out " + out.string());
+        EXPECT_EQ(result.exitCode, 1) << result.output;
+        // Only the unsupported one is named as missing (KHR_lights_punctual is supported).
+        EXPECT_NE(result.output.find("cannot read model '" + model.string() +
+                                     "': it requires the glTF extension KHR_texture_basisu, which vct does not "
+                                     "implement"),
+                  std::string::npos)
+            << result.output;
+        EXPECT_FALSE(fs::exists(out)) << model;
+    }
 }
 
 // extensionsUsed with an extension vct does not implement: one warning naming it, still loads.
