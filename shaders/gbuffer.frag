@@ -5,6 +5,7 @@
 in vec3 vPosition;
 in vec3 vNormal;
 in vec2 vUv;
+in vec3 vColor;
 
 uniform vec3 uEye;  // scene-local
 
@@ -14,7 +15,7 @@ layout(location = 2) out vec4 outPosition;  // scene-local position, 1 (0 = sky)
 layout(location = 3) out vec4 outEmissive;  // emitted radiance, 0
 
 void main() {
-    vec4 base = materialBaseColor(vUv);
+    vec4 base = materialBaseColor(vUv, vColor);
     outAlbedo = vec4(base.rgb, 1.0);
     outNormal = vec4(facingNormal(vNormal, vPosition, uEye - vPosition), 0.0);
     outPosition = vec4(vPosition, 1.0);

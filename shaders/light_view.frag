@@ -7,6 +7,7 @@
 in vec3 vPosition;
 in vec3 vNormal;
 in vec2 vUv;
+in vec3 vColor;
 
 uniform LightParams uLight;
 uniform float uInverseQuantity;  // 1 / (E or I × the colour's largest component)
@@ -16,7 +17,7 @@ layout(location = 1) out vec4 outNormal;    // facing the light
 layout(location = 2) out vec4 outFlux;      // reflected flux ρ·Φ of this texel / the light's largest texel flux
 
 void main() {
-    vec4 base = materialBaseColor(vUv);
+    vec4 base = materialBaseColor(vUv, vColor);
     vec3 toLight;
     float distanceToLight;
     vec3 incident = incidentIrradiance(uLight, vPosition, toLight, distanceToLight);

@@ -6,10 +6,16 @@ uniform vec3 uEmissive;     // emitted radiance W/(m²·sr)
 uniform float uAlphaCutoff; // < 0: opaque material
 uniform int uHasTexture;
 uniform int uMaterialIndex; // into the materials buffer (GpuScene)
+uniform int uVertexColors;  // 0: every vertex of the draw is white; the interpolated colour is
+                            // then not used (interpolating 1 is not always exactly 1)
 
-// Linear albedo and alpha at `uv`; discards texels that an alpha mask cuts away.
-vec4 materialBaseColor(vec2 uv) {
-    vec4 color = uBaseColor;
+vec3 materialVertexColor(vec3 interpolated) { return uVertexColors != 0 ? interpolated : vec3(1.0); }
+
+// Linear albedo and alpha at `uv` (the texture's coordinates, material_vertex.glsl) for a
+// surface of vertex colour `vertexColor` (glTF: it multiplies the base colour); discards texels
+// that an alpha mask cuts away.
+vec4 materialBaseColor(vec2 uv, vec3 vertexColor) {
+    vec4 color = uBaseColor * vec4(materialVertexColor(vertexColor), 1.0);
     if (uHasTexture != 0) color *= texture(uBaseColorTexture, uv);  // sRGB texture: already linear
     if (uAlphaCutoff >= 0.0 && color.a < uAlphaCutoff) discard;
     return color;
@@ -25,13 +31,14 @@ vec3 facingNormal(vec3 interpolated, vec3 position, vec3 towards) {
     return dot(n, towards) < 0.0 ? -n : n;
 }
 
-// The texture's colour alone (white without a texture) and the full alpha (material × texel),
+// The texture's colour alone (white without a texture) times the vertex colour, and the full
+// alpha (material × texel),
 // with explicit texture derivatives, for passes without screen-space derivatives (voxelization
 // samples at a clipped-polygon centroid; the material's colour factor is applied later, by
 // index, so that changing it needs no new voxelization). Does not discard: the caller decides.
-vec4 materialTextureGrad(vec2 uv, vec2 dUvdx, vec2 dUvdy) {
+vec4 materialTextureGrad(vec2 uv, vec2 dUvdx, vec2 dUvdy, vec3 vertexColor) {
     vec4 texel = uHasTexture != 0 ? textureGrad(uBaseColorTexture, uv, dUvdx, dUvdy) : vec4(1.0);
-    return vec4(texel.rgb, texel.a * uBaseColor.a);
+    return vec4(texel.rgb * materialVertexColor(vertexColor), texel.a * uBaseColor.a);
 }
 
 bool materialCutsAway(float alpha) { return uAlphaCutoff >= 0.0 && alpha < uAlphaCutoff; }

@@ -1,18 +1,18 @@
 #version 450
 // Shared vertex stage of every pass that rasterizes the scene from some view.
-layout(location = 0) in vec3 inPosition;  // scene-local
-layout(location = 1) in vec3 inNormal;
-layout(location = 2) in vec2 inUv;
+#include "material_vertex.glsl"
 
 uniform mat4 uViewProjection;
 
 out vec3 vPosition;
 out vec3 vNormal;
-out vec2 vUv;
+out vec2 vUv;     // the base-colour texture's coordinates (set and transform applied)
+out vec3 vColor;  // vertex colour
 
 void main() {
     vPosition = inPosition;
     vNormal = inNormal;
-    vUv = inUv;
+    vUv = materialUv();
+    vColor = inColor;
     gl_Position = uViewProjection * vec4(inPosition, 1.0);
 }

@@ -15,10 +15,13 @@ flat in float gAreaScale;
 flat in vec2 gUv0;
 flat in vec2 gUv1;
 flat in vec2 gUv2;
+flat in vec3 gColor0;
+flat in vec3 gColor1;
+flat in vec3 gColor2;
 flat in vec3 gFaceNormal;
 
 layout(std430, binding = SSBO_FRAGMENT_COUNTER) buffer FragmentCounter { uint fragmentCount; };
-// Per fragment: cell, texture colour RGBA8 (the material's colour factor and emission are applied
+// Per fragment: cell, texture × vertex colour RGBA8 (the material's colour factor and emission are applied
 // by svo_leaves), the triangle's normal (octahedral), material index << 16 | area (half float).
 layout(rgba32ui, binding = IMAGE_FRAGMENTS) uniform writeonly uimageBuffer uFragments;
 
@@ -91,7 +94,8 @@ void main() {
     vec2 uv = gUv0 + s * (gUv1 - gUv0) + t * (gUv2 - gUv0);
     vec2 dUvdx = (e2.y * (gUv1 - gUv0) - e1.y * (gUv2 - gUv0)) * invDet;
     vec2 dUvdy = (-e2.x * (gUv1 - gUv0) + e1.x * (gUv2 - gUv0)) * invDet;
-    vec4 base = materialTextureGrad(uv, dUvdx, dUvdy);
+    vec3 vertexColor = gColor0 + s * (gColor1 - gColor0) + t * (gColor2 - gColor0);
+    vec4 base = materialTextureGrad(uv, dUvdx, dUvdy, vertexColor);
     if (materialCutsAway(base.a)) discard;
 
     int first = max(int(ceil(wLow - kEps)) - 1, 0);

@@ -10,6 +10,7 @@ layout(triangle_strip, max_vertices = 4) out;
 
 in vec3 vVoxel[];
 in vec2 vUv[];
+in vec3 vColor[];
 
 uniform float uViewportSize;  // N, as a float
 
@@ -22,6 +23,9 @@ flat out float gAreaScale;  // true area / projected area = |n| / |n[axis]|
 flat out vec2 gUv0;
 flat out vec2 gUv1;
 flat out vec2 gUv2;
+flat out vec3 gColor0;   // vertex colours
+flat out vec3 gColor1;
+flat out vec3 gColor2;
 flat out vec3 gFaceNormal;  // the triangle's own normal: what its area projects along each axis by
 
 // The projection frame: (u, v) on the viewport and w along the projection axis.
@@ -46,6 +50,9 @@ void emit(vec2 uv) {
     gUv0 = vUv[0];
     gUv1 = vUv[1];
     gUv2 = vUv[2];
+    gColor0 = vColor[0];
+    gColor1 = vColor[1];
+    gColor2 = vColor[2];
     gFaceNormal = triNormal;
     gl_Position = vec4(uv / uViewportSize * 2.0 - 1.0, 0.0, 1.0);
     EmitVertex();

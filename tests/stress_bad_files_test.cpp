@@ -8,7 +8,9 @@
 #include <fstream>
 
 #include "core/error.hpp"
+#include "scene/image_payload.hpp"
 #include "scene/scene_loader.hpp"
+#include "scene/texture_decode.hpp"
 #include "stress_util.hpp"
 #include "test_util.hpp"
 
@@ -63,7 +65,8 @@ const std::vector<Expectation> kModels = {
 
 // Each committed image as the texture of a quad: a warning, the material's colour instead.
 const std::vector<std::string> kImages = {"png_truncated.png", "png_wrong_magic.png", "png_huge_dims.png",
-                                          "png_zero_size.png", "jpg_truncated.jpg",   "bmp_huge_dims.bmp"};
+                                          "png_zero_size.png", "jpg_truncated.jpg",   "bmp_huge_dims.bmp",
+                                          "tga_huge_dims.tga"};
 
 bool finite3(const glm::vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
 
@@ -147,6 +150,47 @@ TEST(StressBadFiles, MalformedImagesFallBackToTheMaterialColour) {
         ASSERT_EQ(scene.report.missingTextures.size(), 1u) << image;
     }
     std::printf("[ bad files] %zu malformed images: each a warning, the material colour instead\n", kImages.size());
+}
+
+// A texture must not cost far more than its file holds: the 19-byte TGA declaring 9265×12576
+// uncompressed texels (466 MB decoded; 3 s and 1 GB before the check) is refused from its header.
+TEST(StressBadFiles, OversizedUncompressedImageIsRefusedBeforeDecoding) {
+    const auto dir = testDir();
+    fs::copy_file(kBad / "tga_huge_dims.tga", dir / "huge.tga", fs::copy_options::overwrite_existing);
+    std::ofstream(dir / "quad.mtl") << "newmtl textured\nKd 0.2 0.4 0.6\nmap_Kd huge.tga\n";
+    std::ofstream(dir / "quad.obj") << "mtllib quad.mtl\nusemtl textured\nv 0 0 0\nv 1 0 0\nv 1 1 0\nf 1 2 3\n";
+    const auto start = std::chrono::steady_clock::now();
+    const CommandResult r = runVct("info --scene " + (dir / "quad.obj").string());
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    EXPECT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_NE(r.output.find("an uncompressed 9265x12576 image needs 349549920 bytes of texels, but the file has 19 "
+                            "bytes in all"),
+              std::string::npos)
+        << r.output;
+    EXPECT_LT(seconds, 1.0) << "vct info took " << seconds << " s";
+    std::printf("[ bad files] 19-byte TGA declaring 9265x12576 texels refused in %.3f s\n", seconds);
+}
+
+// Compressed images: the decoded size is bounded by the file's (kMaxExpansion:1), which real
+// images stay far below: a uniform 2048² PNG (16 MiB decoded) still decodes.
+TEST(StressBadFiles, CompressedImageExpansionIsBounded) {
+    const std::vector<std::uint8_t> header(100, 0);
+    const auto refused = vct::implausibleImagePayload(header.data(), header.size(), 8192, 8192);
+    ASSERT_TRUE(refused.has_value());
+    EXPECT_NE(refused->find("a 8192x8192 image (268435456 bytes decoded) from 100 bytes of file"), std::string::npos)
+        << *refused;
+    EXPECT_FALSE(vct::implausibleImagePayload(header.data(), header.size(), 1024, 1024).has_value())
+        << "4 MiB decoded is always allowed";
+
+    const auto dir = testDir();
+    vct::Image8 flat(2048, 2048);
+    std::fill(flat.rgba.begin(), flat.rgba.end(), std::uint8_t(200));
+    vct::writePng(dir / "flat.png", flat);
+    std::string error;
+    const auto decoded = vct::decodeImageFile(dir / "flat.png", "flat.png", error);
+    EXPECT_TRUE(decoded.has_value()) << error << " (file of " << fs::file_size(dir / "flat.png") << " bytes)";
+    std::printf("[ bad files] uniform 2048x2048 PNG: %ju bytes, %.0f:1, decoded\n",
+                std::uintmax_t(fs::file_size(dir / "flat.png")), 16777216.0 / double(fs::file_size(dir / "flat.png")));
 }
 
 TEST(StressBadFiles, FallbacksRenderAnImage) {

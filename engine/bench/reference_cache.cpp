@@ -86,7 +86,10 @@ std::uint64_t sceneContentHash(const Scene& scene) {
     h.string(scene.name);
     h.vec3(scene.origin);
     h.value(scene.vertices.size());
-    for (const Vertex& v : scene.vertices) h.vec3(v.position), h.vec3(v.normal), h.value(v.uv.x), h.value(v.uv.y);
+    for (const Vertex& v : scene.vertices) {
+        h.vec3(v.position), h.vec3(v.normal), h.value(v.uv.x), h.value(v.uv.y);
+        h.value(v.uv1.x), h.value(v.uv1.y), h.vec3(v.color);
+    }
     h.bytes(scene.indices.data(), scene.indices.size() * sizeof(std::uint32_t));
     for (const DrawRange& r : scene.drawRanges) h.value(r.firstIndex), h.value(r.indexCount), h.value(r.material);
     for (const Material& m : scene.materials) {
@@ -96,6 +99,9 @@ std::uint64_t sceneContentHash(const Scene& scene) {
         h.value(m.alphaCutoff);
         h.value(m.baseAlpha);
         h.vec3(m.emissive);
+        const TextureMapping& t = m.baseColorMapping;
+        h.value(t.texCoord), h.value(int(t.wrapS)), h.value(int(t.wrapT));
+        for (int c = 0; c < 3; ++c) h.vec3(t.transform[c]);
     }
     for (const Texture& t : scene.textures) {
         h.value(t.width);

@@ -49,6 +49,7 @@ void run(const InfoOptions& o) {
                 r.sourceTriangles, r.degenerateTriangles, r.droppedTriangles, r.repairedNormals, r.repairedUvs,
                 r.missingTextures.size());
     for (const auto& t : r.missingTextures) std::printf("  missing texture: %s\n", t.c_str());
+    for (const auto& f : r.unsupportedFeatures) std::printf("  not supported: %s\n", f.c_str());
     if (o.voxelLevels) {
         // The octree's real size: build it (on the GPU, through the frame's own passes) and measure.
         auto context = gl::createContext(gl::parseBackend(o.backend));

@@ -1,7 +1,8 @@
 #pragma once
 // What the path tracer needs to know about a surface's material, evaluated the way the
 // rasterizer's shaders/material.glsl does it:
-//   albedo ρ = baseColor · texture.rgb   (linear; texture sampled by TextureSampler)
+//   albedo ρ = baseColor · vertex colour · texture.rgb   (linear; texture sampled by
+//              TextureSampler at the material's TextureMapping of the vertex UV sets)
 //   alpha    = baseAlpha · texture.a     (Mask materials: alpha < cutoff is a hole)
 //   emission = Material::emissive        (W/(m²·sr), not textured, from both sides)
 #include <vector>
@@ -17,12 +18,13 @@ class MaterialTable {
 public:
     explicit MaterialTable(const Scene& scene);  // keeps references: `scene` must outlive this
 
-    glm::vec3 albedo(std::uint32_t material, glm::vec2 uv) const;
+    // At a point with vertex UV sets `uv0`, `uv1` and vertex colour `vertexColor`.
+    glm::vec3 albedo(std::uint32_t material, glm::vec2 uv0, glm::vec2 uv1, glm::vec3 vertexColor) const;
     glm::vec3 emission(std::uint32_t material) const { return materials_[material].emission; }
     bool isMasked(std::uint32_t material) const { return materials_[material].masked; }
     bool isEmissive(std::uint32_t material) const { return materials_[material].emissive; }
     // True where an alpha-masked material has a hole (the ray passes through).
-    bool cutsAway(std::uint32_t material, glm::vec2 uv) const;
+    bool cutsAway(std::uint32_t material, glm::vec2 uv0, glm::vec2 uv1) const;
 
 private:
     struct Entry {
@@ -31,11 +33,12 @@ private:
         float cutoff;
         glm::vec3 emission;
         int texture;  // index into samplers_, −1 = none
+        TextureMapping mapping;
         bool masked;
         bool emissive;
     };
     std::vector<Entry> materials_;
-    std::vector<TextureSampler> samplers_;
+    std::vector<TextureSampler> samplers_;  // one per material with a texture (its wrap modes)
 };
 
 }  // namespace vct::reference

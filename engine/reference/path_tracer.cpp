@@ -19,7 +19,7 @@ RadianceSample PathTracer::trace(const Ray& cameraRay, Pcg32& rng) const {
 
     glm::vec3 normal = facing(hit->shadingNormal, cameraRay.direction);
     glm::vec3 geometric = facing(hit->geometricNormal, cameraRay.direction);
-    glm::vec3 albedo = materials_.albedo(hit->material, hit->uv);
+    glm::vec3 albedo = materials_.albedo(hit->material, hit->uv, hit->uv1, hit->color);
     result.direct = glm::dvec3(materials_.emission(hit->material));
     if (!lights_.empty()) result.direct += lights_.reflected(rays_, *hit, normal, geometric, albedo);
 
@@ -43,7 +43,7 @@ RadianceSample PathTracer::trace(const Ray& cameraRay, Pcg32& rng) const {
         if (!hit) break;  // left the scene: the sky is black
         normal = facing(hit->shadingNormal, direction);
         geometric = facing(hit->geometricNormal, direction);
-        albedo = materials_.albedo(hit->material, hit->uv);
+        albedo = materials_.albedo(hit->material, hit->uv, hit->uv1, hit->color);
         glm::dvec3 radiance(materials_.emission(hit->material));
         if (!lights_.empty()) radiance += lights_.reflected(rays_, *hit, normal, geometric, albedo);
         result.indirect += throughput * radiance;

@@ -39,10 +39,12 @@ void alphaMaskFilter(const RTCFilterFunctionNArguments* args) {
         const float u = RTCHitN_u(args->hit, args->N, i);
         const float v = RTCHitN_v(args->hit, args->N, i);
         const std::size_t first = 3 * (std::size_t(range->firstTriangle) + prim);
-        const glm::vec2 uv = (1.0f - u - v) * scene.vertices[scene.indices[first]].uv +
-                             u * scene.vertices[scene.indices[first + 1]].uv +
-                             v * scene.vertices[scene.indices[first + 2]].uv;
-        if (range->materials->cutsAway(range->material, uv)) args->valid[i] = 0;
+        const Vertex& a = scene.vertices[scene.indices[first]];
+        const Vertex& b = scene.vertices[scene.indices[first + 1]];
+        const Vertex& c = scene.vertices[scene.indices[first + 2]];
+        const glm::vec2 uv0 = (1.0f - u - v) * a.uv + u * b.uv + v * c.uv;
+        const glm::vec2 uv1 = (1.0f - u - v) * a.uv1 + u * b.uv1 + v * c.uv1;
+        if (range->materials->cutsAway(range->material, uv0, uv1)) args->valid[i] = 0;
     }
 }
 
@@ -141,6 +143,8 @@ std::optional<SurfaceHit> RayScene::intersect(glm::vec3 origin, glm::vec3 direct
     // triangle's coordinates, not to the (possibly long) ray.
     hit.position = w * a.position + u * b.position + v * c.position;
     hit.uv = w * a.uv + u * b.uv + v * c.uv;
+    hit.uv1 = w * a.uv1 + u * b.uv1 + v * c.uv1;
+    hit.color = w * a.color + u * b.color + v * c.color;
     const glm::vec3 ng = glm::cross(b.position - a.position, c.position - a.position);
     const float ngLength = glm::length(ng);
     hit.geometricNormal = ngLength > 0.0f && std::isfinite(ngLength) ? ng / ngLength : -direction;

@@ -29,7 +29,9 @@ struct SurfaceHit {
     glm::vec3 position{0.0f};     // scene-local, interpolated from the triangle's vertices
     glm::vec3 geometricNormal{};  // unit, from the triangle's edges; orientation arbitrary
     glm::vec3 shadingNormal{};    // unit interpolated vertex normal (geometric when degenerate)
-    glm::vec2 uv{0.0f};
+    glm::vec2 uv{0.0f};           // vertex UV sets 0 and 1, interpolated
+    glm::vec2 uv1{0.0f};
+    glm::vec3 color{1.0f};        // vertex colour, interpolated
     std::uint32_t material = 0;
     float offset = 0.0f;          // how far to push a new ray's origin off this surface
     glm::vec3 inward{0.0f};       // towards the triangle's centroid, length ≤ offset (see below)

@@ -1,5 +1,6 @@
 #include "reference/texture_sampler.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "core/error.hpp"
@@ -16,29 +17,67 @@ const std::array<float, 256>& srgbToLinearTable() {
     return table;
 }
 
-TextureSampler::TextureSampler(const Texture& texture)
-    : texture_(&texture), width_(texture.width), height_(texture.height) {
+TextureSampler::TextureSampler(const Texture& texture, TextureWrap wrapS, TextureWrap wrapT)
+    : texture_(&texture), width_(texture.width), height_(texture.height), wrapS_(wrapS), wrapT_(wrapT) {
     if (width_ < 1 || height_ < 1 || texture.rgba.size() != std::size_t(width_) * height_ * 4)
         fail("texture '", texture.name, "' has inconsistent size ", width_, "x", height_, " for ",
              texture.rgba.size(), " bytes (a loader bug: please report it)");
 }
 
-TextureSampler::Footprint TextureSampler::footprint(glm::vec2 uv) const {
-    // Wrap first (in double, so UVs far outside [0,1] keep their sub-texel position), then find
-    // the texel centres around the point: centre of texel i is at (i + ½)/W.
-    auto axis = [](double coordinate, int size, int& i0, int& i1, float& weight) {
-        const double s = (coordinate - std::floor(coordinate)) * size - 0.5;  // in [−½, size − ½)
-        const double base = std::floor(s);
-        weight = float(s - base);
-        i0 = int(base);
-        i1 = i0 + 1;
-        if (i0 < 0) i0 += size;      // repeat: −1 → size − 1
-        if (i1 >= size) i1 -= size;  // repeat: size → 0
+namespace {
+
+// The texel indices i0, i1 = i0 + 1 around `coordinate` along an axis of `size` texels (centre of
+// texel i at (i + ½)/size), wrapped, and the weight of i1.
+void repeatAxis(double coordinate, int size, int& i0, int& i1, float& weight) {
+    // Wrap first (in double, so UVs far outside [0,1] keep their sub-texel position).
+    const double s = (coordinate - std::floor(coordinate)) * size - 0.5;  // in [−½, size − ½)
+    const double base = std::floor(s);
+    weight = float(s - base);
+    i0 = int(base);
+    i1 = i0 + 1;
+    if (i0 < 0) i0 += size;      // repeat: −1 → size − 1
+    if (i1 >= size) i1 -= size;  // repeat: size → 0
+}
+
+void clampAxis(double coordinate, int size, int& i0, int& i1, float& weight) {
+    // Beyond the edge every index clamps to the edge texel: cut far coordinates short first.
+    const double s = std::clamp(coordinate, -1.0, 2.0) * size - 0.5;
+    const double base = std::floor(s);
+    weight = float(s - base);
+    i0 = std::clamp(int(base), 0, size - 1);
+    i1 = std::clamp(int(base) + 1, 0, size - 1);
+}
+
+void mirrorAxis(double coordinate, int size, int& i0, int& i1, float& weight) {
+    // The pattern repeats every 2 in UV: reduce first (in double, as for repeat).
+    const double s = (coordinate - 2.0 * std::floor(0.5 * coordinate)) * size - 0.5;  // [−½, 2·size − ½)
+    const double base = std::floor(s);
+    weight = float(s - base);
+    // GL: (size − 1) − mirror((i mod 2·size) − size), mirror(a) = a ≥ 0 ? a : −(1 + a).
+    auto mirrored = [size](int i) {
+        const int m = ((i % (2 * size)) + 2 * size) % (2 * size);
+        return m < size ? m : 2 * size - 1 - m;
     };
+    i0 = mirrored(int(base));
+    i1 = mirrored(int(base) + 1);
+}
+
+void wrapAxis(TextureWrap wrap, double coordinate, int size, int& i0, int& i1, float& weight) {
+    switch (wrap) {
+        case TextureWrap::ClampToEdge: return clampAxis(coordinate, size, i0, i1, weight);
+        case TextureWrap::MirroredRepeat: return mirrorAxis(coordinate, size, i0, i1, weight);
+        case TextureWrap::Repeat: break;
+    }
+    repeatAxis(coordinate, size, i0, i1, weight);
+}
+
+}  // namespace
+
+TextureSampler::Footprint TextureSampler::footprint(glm::vec2 uv) const {
     Footprint f{};
     int j0 = 0, j1 = 0;
-    axis(uv.x, width_, f.x0, f.x1, f.fx);
-    axis(uv.y, height_, j0, j1, f.fy);
+    wrapAxis(wrapS_, uv.x, width_, f.x0, f.x1, f.fx);
+    wrapAxis(wrapT_, uv.y, height_, j0, j1, f.fy);
     // GL row j (bottom-up) is file row H − 1 − j (Texture::rgba is top-down).
     f.r0 = height_ - 1 - j0;
     f.r1 = height_ - 1 - j1;

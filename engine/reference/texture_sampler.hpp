@@ -4,7 +4,8 @@
 // by pre-filtered mip levels):
 //   * UV origin bottom-left (Vertex::uv): GL row j = floor(v·H − ½) counts from the LAST row of
 //     Texture::rgba, i.e. file row = H − 1 − j (texel row ≈ (1 − v)·H);
-//   * GL_REPEAT wrapping in both directions;
+//   * the material's wrap mode per axis (GL_REPEAT, GL_CLAMP_TO_EDGE, GL_MIRRORED_REPEAT),
+//     applied to the texel indices exactly as the GL specification does (section 8.14.2);
 //   * GL_LINEAR: bilinear between the four nearest texel centres;
 //   * sRGB → linear per texel *before* filtering, as GL does for sRGB textures (filtering the
 //     encoded values and decoding afterwards gives a darker, wrong result at edges).
@@ -19,7 +20,9 @@ namespace vct::reference {
 
 class TextureSampler {
 public:
-    explicit TextureSampler(const Texture& texture);  // keeps a reference: `texture` must outlive this
+    // Keeps a reference: `texture` must outlive this.
+    explicit TextureSampler(const Texture& texture, TextureWrap wrapS = TextureWrap::Repeat,
+                            TextureWrap wrapT = TextureWrap::Repeat);
 
     glm::vec4 sample(glm::vec2 uv) const;  // linear RGB and alpha, bilinear at level 0
     float sampleAlpha(glm::vec2 uv) const; // alpha only (the alpha-mask test in the ray filter)
@@ -36,6 +39,7 @@ private:
 
     const Texture* texture_;
     int width_, height_;
+    TextureWrap wrapS_, wrapT_;
 };
 
 // sRGB-encoded byte → linear value, the IEC 61966-2-1 EOTF, tabulated.

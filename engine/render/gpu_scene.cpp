@@ -12,6 +12,26 @@ namespace vct {
 
 namespace {
 bool finite3(const glm::vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
+
+GLint glWrap(TextureWrap wrap) {
+    switch (wrap) {
+        case TextureWrap::ClampToEdge: return GL_CLAMP_TO_EDGE;
+        case TextureWrap::MirroredRepeat: return GL_MIRRORED_REPEAT;
+        case TextureWrap::Repeat: break;
+    }
+    return GL_REPEAT;
+}
+
+// The filtering every scene texture gets (set on the texture itself and on the wrap samplers).
+constexpr GLint kMinFilter = GL_LINEAR_MIPMAP_LINEAR, kMagFilter = GL_LINEAR;
+constexpr float kMaxAnisotropy = 8.0f;
+
+float maxAnisotropy() {
+    if (!(GLAD_GL_ARB_texture_filter_anisotropic || GLAD_GL_EXT_texture_filter_anisotropic)) return 1.0f;
+    GLfloat limit = 1.0f;
+    glGetFloatv(GL_MAX_TEXTURE_MAX_ANISOTROPY, &limit);
+    return std::min(kMaxAnisotropy, limit);
+}
 }  // namespace
 
 GpuScene::GpuScene(const Scene& scene) : vertexArray_(gl::createVertexArray()) {
@@ -38,17 +58,17 @@ GpuScene::GpuScene(const Scene& scene) : vertexArray_(gl::createVertexArray()) {
     const GLuint vao = vertexArray_.id();
     glVertexArrayVertexBuffer(vao, 0, vertices_.id(), 0, sizeof(Vertex));
     glVertexArrayElementBuffer(vao, indices_.id());
-    const GLuint offsets[] = {offsetof(Vertex, position), offsetof(Vertex, normal), offsetof(Vertex, uv)};
-    const GLint sizes[] = {3, 3, 2};
-    for (GLuint attribute = 0; attribute < 3; ++attribute) {
+    // Attribute locations as in shaders/material_vertex.glsl.
+    const GLuint offsets[] = {offsetof(Vertex, position), offsetof(Vertex, normal), offsetof(Vertex, uv),
+                              offsetof(Vertex, uv1), offsetof(Vertex, color)};
+    const GLint sizes[] = {3, 3, 2, 2, 3};
+    for (GLuint attribute = 0; attribute < 5; ++attribute) {
         glEnableVertexArrayAttrib(vao, attribute);
         glVertexArrayAttribFormat(vao, attribute, sizes[attribute], GL_FLOAT, GL_FALSE, offsets[attribute]);
         glVertexArrayAttribBinding(vao, attribute, 0);
     }
 
-    GLfloat maxAnisotropy = 1.0f;
-    const bool anisotropic = GLAD_GL_ARB_texture_filter_anisotropic || GLAD_GL_EXT_texture_filter_anisotropic;
-    if (anisotropic) glGetFloatv(GL_MAX_TEXTURE_MAX_ANISOTROPY, &maxAnisotropy);
+    anisotropy_ = maxAnisotropy();
     for (const Texture& texture : scene.textures) {
         const int levels = 1 + int(std::floor(std::log2(std::max(texture.width, texture.height))));
         gl::Texture gpu = gl::createTexture(GL_TEXTURE_2D, texture.name.c_str());
@@ -61,11 +81,11 @@ GpuScene::GpuScene(const Scene& scene) : vertexArray_(gl::createVertexArray()) {
             glTextureSubImage2D(gpu.id(), 0, 0, texture.height - 1 - y, texture.width, 1, GL_RGBA, GL_UNSIGNED_BYTE,
                                 texture.rgba.data() + rowBytes * y);
         glGenerateTextureMipmap(gpu.id());
-        glTextureParameteri(gpu.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
-        glTextureParameteri(gpu.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+        glTextureParameteri(gpu.id(), GL_TEXTURE_MIN_FILTER, kMinFilter);
+        glTextureParameteri(gpu.id(), GL_TEXTURE_MAG_FILTER, kMagFilter);
         glTextureParameteri(gpu.id(), GL_TEXTURE_WRAP_S, GL_REPEAT);
         glTextureParameteri(gpu.id(), GL_TEXTURE_WRAP_T, GL_REPEAT);
-        if (anisotropic) glTextureParameterf(gpu.id(), GL_TEXTURE_MAX_ANISOTROPY, std::min(8.0f, maxAnisotropy));
+        if (anisotropy_ > 1.0f) glTextureParameterf(gpu.id(), GL_TEXTURE_MAX_ANISOTROPY, anisotropy_);
         gl::checkErrors(concat("uploading texture '", texture.name, "' (", texture.width, "x", texture.height, ")"));
         bytes_ += rowBytes * texture.height * 4 / 3;
         textures_.push_back(std::move(gpu));
@@ -79,8 +99,18 @@ GpuScene::GpuScene(const Scene& scene) : vertexArray_(gl::createVertexArray()) {
     for (std::size_t i = 0; i < scene.materials.size(); ++i) {
         materials_.push_back({});
         setMaterial(i, scene.materials[i]);
+        const TextureMapping& mapping = scene.materials[i].baseColorMapping;
+        materials_[i].texCoordSet = mapping.texCoord;
+        materials_[i].uvTransform = mapping.transform;
+        materials_[i].sampler = samplerFor(mapping.wrapS, mapping.wrapT);
     }
     ranges_ = scene.drawRanges;
+    for (const DrawRange& range : ranges_) {
+        bool coloured = false;
+        for (std::uint32_t i = range.firstIndex; i < range.firstIndex + range.indexCount && !coloured; ++i)
+            coloured = scene.vertices[scene.indices[i]].color != glm::vec3(1.0f);
+        rangeHasVertexColors_.push_back(coloured);
+    }
 }
 
 void GpuScene::setMaterial(std::size_t index, const Material& material) {
@@ -91,11 +121,30 @@ void GpuScene::setMaterial(std::size_t index, const Material& material) {
              material.baseColor.z, "), alpha ", material.baseAlpha, ", emission (", material.emissive.x, ", ",
              material.emissive.y, ", ", material.emissive.z, ") and cutoff ", material.alphaCutoff,
              " must be finite and not negative");
-    materials_.at(index) = {material.baseColor, material.baseAlpha, material.emissive,
-                            material.alphaMode == AlphaMode::Mask ? material.alphaCutoff : -1.0f,
-                            material.baseColorTexture};
+    GpuMaterial& m = materials_.at(index);
+    m.baseColor = material.baseColor;
+    m.baseAlpha = material.baseAlpha;
+    m.emissive = material.emissive;
+    m.alphaCutoff = material.alphaMode == AlphaMode::Mask ? material.alphaCutoff : -1.0f;
+    m.texture = material.baseColorTexture;
     const glm::vec4 values[2] = {glm::vec4(material.baseColor, material.baseAlpha), glm::vec4(material.emissive, 0.0f)};
     glNamedBufferSubData(materialBuffer_.id(), GLintptr(index * sizeof values), sizeof values, values);
+}
+
+GLuint GpuScene::samplerFor(TextureWrap wrapS, TextureWrap wrapT) {
+    // Plain repeat is what the textures themselves are set to: no sampler object, so scenes
+    // without wrap modes are sampled exactly as before.
+    if (wrapS == TextureWrap::Repeat && wrapT == TextureWrap::Repeat) return 0;
+    gl::Sampler& sampler = samplers_[3 * int(wrapS) + int(wrapT)];
+    if (sampler.id() == 0) {
+        sampler = gl::createSampler();
+        glSamplerParameteri(sampler.id(), GL_TEXTURE_MIN_FILTER, kMinFilter);
+        glSamplerParameteri(sampler.id(), GL_TEXTURE_MAG_FILTER, kMagFilter);
+        glSamplerParameteri(sampler.id(), GL_TEXTURE_WRAP_S, glWrap(wrapS));
+        glSamplerParameteri(sampler.id(), GL_TEXTURE_WRAP_T, glWrap(wrapT));
+        if (anisotropy_ > 1.0f) glSamplerParameterf(sampler.id(), GL_TEXTURE_MAX_ANISOTROPY, anisotropy_);
+    }
+    return sampler.id();
 }
 
 bool GpuScene::hasEmission() const { return maxEmission() > 0.0f; }
@@ -108,18 +157,24 @@ float GpuScene::maxEmission() const {
 
 void GpuScene::draw(GLuint program) const {
     glBindVertexArray(vertexArray_.id());
-    for (const DrawRange& range : ranges_) {
+    for (std::size_t r = 0; r < ranges_.size(); ++r) {
+        const DrawRange& range = ranges_[r];
         const GpuMaterial& m = materials_[range.material];
+        gl::setUniform(program, "uVertexColors", rangeHasVertexColors_[r] ? 1 : 0);
         gl::setUniform(program, "uMaterialIndex", int(range.material));
         gl::setUniform(program, "uBaseColor", glm::vec4(m.baseColor, m.baseAlpha));
         gl::setUniform(program, "uEmissive", m.emissive);
         gl::setUniform(program, "uAlphaCutoff", m.alphaCutoff);
         gl::setUniform(program, "uHasTexture", m.texture >= 0 ? 1 : 0);
+        gl::setUniform(program, "uTexCoordSet", m.texCoordSet);
+        gl::setUniform(program, "uUvTransform", m.uvTransform);
         glBindTextureUnit(gl::TEXTURE_BASE_COLOR, m.texture >= 0 ? textures_[std::size_t(m.texture)].id() : 0);
+        glBindSampler(gl::TEXTURE_BASE_COLOR, m.sampler);
         glDrawElements(GL_TRIANGLES, GLsizei(range.indexCount), GL_UNSIGNED_INT,
                        reinterpret_cast<const void*>(std::uintptr_t(range.firstIndex) * sizeof(std::uint32_t)));
     }
     glBindVertexArray(0);
+    glBindSampler(gl::TEXTURE_BASE_COLOR, 0);  // later passes use the unit with their textures' own settings
 }
 
 }  // namespace vct

@@ -1,6 +1,8 @@
 #pragma once
 // The scene's geometry and materials on the GPU: one interleaved vertex buffer, one index
-// buffer sorted by material, and one mipmapped sRGB texture per base-colour image. Every pass
+// buffer sorted by material, and one mipmapped sRGB texture per base-colour image, sampled with
+// the material's wrap modes (a sampler object per combination other than repeat) and read at
+// the material's texture coordinates (set and transform: shaders/material_vertex.glsl). Every pass
 // that rasterizes the scene (G-buffer, light-view map, voxelization) draws it through draw(),
 // which sets the material uniforms declared in shaders/material.glsl. The same material values
 // also live in a storage buffer (gl::SSBO_MATERIALS, one {baseColor, emissive} pair per material)
@@ -32,21 +34,31 @@ public:
 
 private:
     struct GpuMaterial {
-        glm::vec3 baseColor;
-        float baseAlpha;
-        glm::vec3 emissive;
-        float alphaCutoff;  // negative: opaque
-        int texture;        // index into textures_, −1 none
+        glm::vec3 baseColor{0.0f};
+        float baseAlpha = 1.0f;
+        glm::vec3 emissive{0.0f};
+        float alphaCutoff = -1.0f;  // negative: opaque
+        int texture = -1;           // index into textures_, −1 none
+        // The base-colour texture's TextureMapping: UV set, transform, and the sampler object of
+        // its wrap modes (0: the texture's own settings, repeat).
+        int texCoordSet = 0;
+        glm::mat3 uvTransform{1.0f};
+        GLuint sampler = 0;
     };
+    // The sampler object of a wrap pair, made on first use; 0 for repeat/repeat.
+    GLuint samplerFor(TextureWrap wrapS, TextureWrap wrapT);
 
     gl::VertexArray vertexArray_;
     gl::Buffer vertices_;
     gl::Buffer indices_;
     std::vector<gl::Texture> textures_;
+    gl::Sampler samplers_[9];  // by 3·wrapS + wrapT, made on first use (none for repeat/repeat)
+    float anisotropy_ = 1.0f;
     std::vector<GpuMaterial> materials_;
     gl::Buffer materialBuffer_;
     void uploadMaterial(std::size_t index);
     std::vector<DrawRange> ranges_;
+    std::vector<bool> rangeHasVertexColors_;  // per range: some vertex colour is not white
     std::size_t bytes_ = 0;
 };
 

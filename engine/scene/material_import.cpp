@@ -76,13 +76,16 @@ void importBaseColour(const aiMaterial& m, Material& material) {
     material.baseAlpha = std::isfinite(alpha) ? std::clamp(alpha, 0.0f, 1.0f) : 1.0f;
 }
 
-// Emissive radiance W/(m²·sr): colour × strength (KHR_materials_emissive_strength).
-void importEmissive(const aiMaterial& m, Material& material) {
+// Emissive radiance W/(m²·sr): colour × strength (KHR_materials_emissive_strength, read from the
+// file's JSON where Assimp does not pass it on: `fileStrength`).
+void importEmissive(const aiMaterial& m, std::optional<float> fileStrength, Material& material) {
     aiColor4D emissive(0.0f, 0.0f, 0.0f, 1.0f);
     if (m.Get(AI_MATKEY_COLOR_EMISSIVE, emissive) != AI_SUCCESS || !finite3(emissive)) return;
     float strength = 1.0f;
-    if (m.Get(AI_MATKEY_EMISSIVE_INTENSITY, strength) != AI_SUCCESS || !std::isfinite(strength) ||
-        strength < 0.0f)
+    if (fileStrength)
+        strength = *fileStrength;
+    else if (m.Get(AI_MATKEY_EMISSIVE_INTENSITY, strength) != AI_SUCCESS || !std::isfinite(strength) ||
+             strength < 0.0f)
         strength = 1.0f;
     material.emissive = sanitizeColour(glm::vec3(emissive.r, emissive.g, emissive.b) * strength,
                                        1e9f, material.name, "emissive colour");
@@ -96,18 +99,61 @@ void importEmissive(const aiMaterial& m, Material& material) {
 struct MaterialTexture {
     TextureSource source;
     const Texture* image = nullptr;
+    aiTextureType type = aiTextureType_NONE;  // the slot it was found in
 };
 
 MaterialTexture baseColourTexture(const aiMaterial& m, TextureLibrary& library,
                                   const std::string& materialName) {
-    std::optional<std::string> reference = textureOf(m, aiTextureType_BASE_COLOR);
-    if (!reference) reference = textureOf(m, aiTextureType_DIFFUSE);
     MaterialTexture base;
+    std::optional<std::string> reference = textureOf(m, aiTextureType_BASE_COLOR);
+    base.type = aiTextureType_BASE_COLOR;
+    if (!reference) {
+        reference = textureOf(m, aiTextureType_DIFFUSE);
+        base.type = aiTextureType_DIFFUSE;
+    }
     if (reference) {
         base.source = library.resolve(*reference);
         base.image = library.image(base.source, materialName);
+    } else {
+        base.type = aiTextureType_NONE;
     }
     return base;
+}
+
+TextureWrap wrapOf(const aiMaterial& m, const char* key, aiTextureType type, const std::string& materialName) {
+    int mode = aiTextureMapMode_Wrap;
+    if (m.Get(key, type, 0, mode) != AI_SUCCESS) return TextureWrap::Repeat;
+    switch (mode) {
+        case aiTextureMapMode_Wrap: return TextureWrap::Repeat;
+        case aiTextureMapMode_Clamp: return TextureWrap::ClampToEdge;
+        case aiTextureMapMode_Mirror: return TextureWrap::MirroredRepeat;
+        default:
+            logWarnOnce(concat("wrap:", materialName), concat("material '", materialName, "': texture wrap mode ", mode,
+                                                             " (decal) is not supported; clamped to the edge"));
+            return TextureWrap::ClampToEdge;
+    }
+}
+
+// Which UV set the base texture reads, how it is transformed and wrapped: the UV set and wrap
+// modes as Assimp gives them (glTF texCoord and sampler wrapS/wrapT; OBJ has no such
+// statements), the glTF KHR_texture_transform from the file (`extras`).
+TextureMapping baseColourMapping(const aiMaterial& m, const MaterialTexture& base, const GltfMaterialExtras& extras,
+                                 const std::string& materialName) {
+    TextureMapping mapping;
+    if (base.type == aiTextureType_NONE) return mapping;
+    int uvSet = 0;
+    if (m.Get(AI_MATKEY_UVWSRC(base.type, 0), uvSet) == AI_SUCCESS) mapping.texCoord = uvSet;
+    if (extras.texCoord) mapping.texCoord = *extras.texCoord;
+    if (mapping.texCoord < 0 || mapping.texCoord > 1) {
+        logWarnOnce(concat("texcoord:", materialName),
+                    concat("material '", materialName, "': base colour texture reads texture coordinates ",
+                           mapping.texCoord, "; vct keeps sets 0 and 1 only, set 0 used"));
+        mapping.texCoord = 0;
+    }
+    if (extras.transform) mapping.transform = *extras.transform;
+    mapping.wrapS = wrapOf(m, _AI_MATKEY_MAPPINGMODE_U_BASE, base.type, materialName);
+    mapping.wrapT = wrapOf(m, _AI_MATKEY_MAPPINGMODE_V_BASE, base.type, materialName);
+    return mapping;
 }
 
 // glTF states the alpha mode; `mode` is its value.
@@ -121,11 +167,9 @@ void applyGltfAlphaMode(const aiMaterial& m, const std::string& mode, const Mate
         material.alphaCutoff = std::clamp(cutoff, 0.0f, 1.0f);
     } else if (mode == "BLEND") {
         // No blending in a voxel GI pipeline: see-through parts become holes, the rest is solid.
+        // Reported once per file, with the materials named, in the load report (gltf_support.cpp).
         material.alphaMode = AlphaMode::Mask;
         material.alphaCutoff = 0.5f;
-        logWarnOnce("blend:" + material.name,
-                    concat("material '", material.name,
-                           "': alphaMode BLEND is not supported; drawn as MASK with cutoff 0.5"));
     }
     if (base.image) material.baseColorTexture = library.use(base.source.key);
 }
@@ -180,12 +224,14 @@ void inferAlphaMode(const aiMaterial& m, const MaterialTexture& base, TextureLib
 
 // ------------------------------------------------------------------------------------------------
 
-Material importMaterial(const aiMaterial& m, std::uint32_t index, TextureLibrary& library) {
+Material importMaterial(const aiMaterial& m, std::uint32_t index, const GltfMaterialExtras& extras,
+                        TextureLibrary& library) {
     Material material;
     material.name = materialName(m, index);
     importBaseColour(m, material);
-    importEmissive(m, material);
+    importEmissive(m, extras.emissiveStrength, material);
     const MaterialTexture base = baseColourTexture(m, library, material.name);
+    material.baseColorMapping = baseColourMapping(m, base, extras, material.name);
     if (aiString alphaMode; m.Get(AI_MATKEY_GLTF_ALPHAMODE, alphaMode) == AI_SUCCESS)
         applyGltfAlphaMode(m, alphaMode.C_Str(), base, library, material);
     else
@@ -202,13 +248,16 @@ Material defaultMaterial() {
 }  // namespace
 
 void importMaterials(const aiScene& ai, const std::vector<std::uint32_t>& used,
-                     const std::filesystem::path& modelPath, Scene& scene) {
+                     const std::vector<GltfMaterialExtras>& extras, const std::filesystem::path& modelPath,
+                     Scene& scene) {
     TextureLibrary library(ai, modelPath, scene);
     scene.materials.clear();
     scene.textures.clear();
+    const GltfMaterialExtras none;
     for (std::uint32_t index : used) {
         const bool exists = index < ai.mNumMaterials && ai.mMaterials[index];
-        scene.materials.push_back(exists ? importMaterial(*ai.mMaterials[index], index, library)
+        const GltfMaterialExtras& fromFile = index < extras.size() ? extras[index] : none;
+        scene.materials.push_back(exists ? importMaterial(*ai.mMaterials[index], index, fromFile, library)
                                          : defaultMaterial());
     }
     library.finish();

@@ -24,6 +24,7 @@ void checkConsistency(const WorldGeometry& g, std::size_t materialCount, const s
     const std::size_t vertexCount = g.positions.size();
     const std::size_t triangleCount = g.triangleCount();
     if (g.normals.size() != vertexCount || g.uvs.size() != vertexCount ||
+        (!g.uvs1.empty() && g.uvs1.size() != vertexCount) || (!g.colors.empty() && g.colors.size() != vertexCount) ||
         g.triangleMaterials.size() != triangleCount || g.indices.size() != 3 * triangleCount)
         fail(sourceName, ": internal error: inconsistent geometry arrays");
     for (std::uint32_t index : g.indices)
@@ -254,24 +255,40 @@ Bounds boundsOf(const std::vector<glm::dvec3>& positions, const std::vector<std:
     return bounds;
 }
 
+// A texture coordinate with its non-finite components set to 0 (counted in `repaired`).
+glm::vec2 repairedUv(glm::dvec2 uv, std::size_t& repaired) {
+    if (!isFiniteUv(uv)) {
+        ++repaired;
+        if (!std::isfinite(uv.x)) uv.x = 0.0;
+        if (!std::isfinite(uv.y)) uv.y = 0.0;
+    }
+    return glm::vec2(uv);
+}
+
+// A vertex colour as an albedo factor: within [0, 1], a non-finite component white (counted in
+// `repaired`).
+glm::vec3 repairedColour(glm::vec3 c, std::size_t& repaired) {
+    glm::vec3 out = c;
+    for (int i = 0; i < 3; ++i) out[i] = std::isfinite(out[i]) ? std::clamp(out[i], 0.0f, 1.0f) : 1.0f;
+    if (out != c) ++repaired;
+    return out;
+}
+
 // The Scene's vertices: positions as float(world − origin); non-finite UV components set to 0
-// and counted in `repairedUvs`.
+// and counted in `repairedUvs`; vertex colours outside [0, 1] clamped, counted in
+// `repairedColours`.
 std::vector<Vertex> localVertices(const WorldGeometry& g, const std::vector<std::uint32_t>& order,
                                   const std::vector<glm::dvec3>& normals, const glm::dvec3& origin,
-                                  std::size_t& repairedUvs) {
+                                  std::size_t& repairedUvs, std::size_t& repairedColours) {
     std::vector<Vertex> vertices(order.size());
     for (std::size_t n = 0; n < order.size(); ++n) {
         const std::uint32_t old = order[n];
         Vertex& out = vertices[n];
         out.position = glm::vec3(g.positions[old] - origin);
         out.normal = glm::vec3(normals[n]);
-        glm::dvec2 uv = g.uvs[old];
-        if (!isFiniteUv(uv)) {
-            ++repairedUvs;
-            if (!std::isfinite(uv.x)) uv.x = 0.0;
-            if (!std::isfinite(uv.y)) uv.y = 0.0;
-        }
-        out.uv = glm::vec2(uv);
+        out.uv = repairedUv(g.uvs[old], repairedUvs);
+        if (!g.uvs1.empty()) out.uv1 = repairedUv(g.uvs1[old], repairedUvs);
+        if (!g.colors.empty()) out.color = repairedColour(g.colors[old], repairedColours);
     }
     return vertices;
 }
@@ -321,8 +338,12 @@ void buildSceneGeometry(const WorldGeometry& g, const std::string& sourceName, b
 
     scene.worldBounds = boundsOf(g.positions, order);
     scene.origin = scene.worldBounds.centre();
-    scene.vertices = localVertices(g, order, normals, scene.origin, report.repairedUvs);
+    std::size_t repairedColours = 0;
+    scene.vertices = localVertices(g, order, normals, scene.origin, report.repairedUvs, repairedColours);
     reportRepairs(sourceName, report);
+    if (repairedColours > 0)
+        logWarn(concat(sourceName, ": clamped ", repairedColours,
+                       " vertex colours outside [0, 1] (non-finite components made 1)"));
 }
 
 }  // namespace vct

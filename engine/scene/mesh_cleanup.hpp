@@ -37,6 +37,8 @@ struct WorldGeometry {
     std::vector<glm::dvec3> positions;             // world space
     std::vector<glm::dvec3> normals;               // world space, same size; zero = missing
     std::vector<glm::dvec2> uvs;                   // same size; see Vertex::uv
+    std::vector<glm::dvec2> uvs1;                  // same size, or empty (all 0); Vertex::uv1
+    std::vector<glm::vec3> colors;                 // same size, or empty (all white); Vertex::color
     std::vector<std::uint32_t> indices;            // 3 per triangle, counter-clockwise = front
     std::vector<std::uint32_t> triangleMaterials;  // one per triangle, index into Scene::materials
     std::vector<GeometryPart> parts;               // ascending firstVertex, first at 0

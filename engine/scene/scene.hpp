@@ -13,6 +13,7 @@
 
 #include "scene/camera.hpp"
 #include "scene/light.hpp"
+#include "scene/texture_mapping.hpp"
 
 namespace vct {
 
@@ -22,6 +23,8 @@ struct Vertex {
     glm::vec2 uv;        // OpenGL convention for every format: (0,0) is the bottom-left of the
                          // image, i.e. the start of the LAST row of Texture::rgba (assimp's
                          // convention; glTF's v is flipped on import). Not wrapped: may leave [0,1].
+    glm::vec2 uv1{0.0f};     // second texture-coordinate set (glTF TEXCOORD_1), same convention
+    glm::vec3 color{1.0f};   // linear vertex colour (glTF COLOR_0, RGB), multiplies the base colour
 };
 
 // Base-colour texture, 8-bit RGBA as stored in the file (sRGB-encoded colour, linear alpha).
@@ -38,6 +41,7 @@ struct Material {
     std::string name;
     glm::vec3 baseColor{0.8f};      // linear albedo ρ (multiplies the texture)
     int baseColorTexture = -1;      // index into Scene::textures, −1 = none
+    TextureMapping baseColorMapping;  // UV set, transform and wrap modes of that texture
     AlphaMode alphaMode = AlphaMode::Opaque;
     float alphaCutoff = 0.5f;       // Mask: texel alpha·baseAlpha < cutoff is a hole
     float baseAlpha = 1.0f;
@@ -67,6 +71,9 @@ struct LoadReport {
     std::size_t repairedNormals = 0;       // missing, zero or non-finite normals regenerated
     std::size_t repairedUvs = 0;           // non-finite UVs set to 0
     std::vector<std::string> missingTextures;
+    // What the file asks for that vct does not do (an unsupported extension it uses, skins,
+    // animations, single-sided materials, …), one line each, also logged once as a warning.
+    std::vector<std::string> unsupportedFeatures;
 };
 
 struct Scene {

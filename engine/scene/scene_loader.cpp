@@ -25,6 +25,9 @@
 #include "core/log.hpp"
 #include "core/vector_text.hpp"
 #include "scene/file_precheck.hpp"
+#include "scene/gltf_json.hpp"
+#include "scene/gltf_resources.hpp"
+#include "scene/gltf_support.hpp"
 #include "scene/material_import.hpp"
 #include "scene/mesh_cleanup.hpp"
 
@@ -304,9 +307,22 @@ private:
     std::unordered_map<std::uint32_t, std::uint32_t> slots_;  // ai index -> scene index
 };
 
+// The second UV set and the vertex colours are kept only when some mesh has them (then every
+// vertex gets one, 0 or white where its mesh has none).
 void appendVertices(const aiMesh& mesh, const InstanceTransform& transform, WorldGeometry& g) {
     const aiVector3D* uvs = mesh.mTextureCoords[0];
+    const aiVector3D* uvs1 = mesh.mTextureCoords[1];
+    const aiColor4D* colours = mesh.mColors[0];
+    const std::size_t before = g.positions.size();
+    const bool keepUvs1 = uvs1 || !g.uvs1.empty(), keepColours = colours || !g.colors.empty();
+    if (keepUvs1) g.uvs1.resize(before, glm::dvec2(0.0));
+    if (keepColours) g.colors.resize(before, glm::vec3(1.0f));
     for (unsigned v = 0; v < mesh.mNumVertices; ++v) {
+        // glTF COLOR_0 is linear RGB(A) and multiplies the base colour. Its alpha is not used:
+        // Assimp 5.2 reports alpha 0 for RGB colours, so it cannot be told from a real 0.
+        if (keepColours)
+            g.colors.push_back(colours ? glm::vec3(colours[v].r, colours[v].g, colours[v].b) : glm::vec3(1.0f));
+        if (keepUvs1) g.uvs1.push_back(uvs1 ? glm::dvec2(uvs1[v].x, uvs1[v].y) : glm::dvec2(0.0));
         g.positions.push_back(transformPoint(transform.world, toDouble(mesh.mVertices[v])));
         g.normals.push_back(mesh.mNormals ? transform.normalMatrix * toDouble(mesh.mNormals[v])
                                           : glm::dvec3(0.0));
@@ -595,9 +611,14 @@ const aiScene& readModel(Assimp::Importer& importer, const std::string& source, 
     } catch (const std::exception& e) {
         fail("cannot read model '", source, "': ", e.what());
     }
-    if (!ai)
-        fail("cannot read model '", source, "': ", importer.GetErrorString(),
-             " (a glTF 2.0, GLB or OBJ file is expected)");
+    if (!ai) {
+        // The format hint only where the format is what Assimp did not recognise: a glTF file
+        // with a missing buffer is a glTF file.
+        const std::string reason = importer.GetErrorString();
+        const bool unknownFormat = reason.find("No suitable reader") != std::string::npos;
+        fail("cannot read model '", source, "': ", reason,
+             unknownFormat ? " (a glTF 2.0, GLB or OBJ file is expected)" : "");
+    }
     if (!ai->mRootNode)
         fail("cannot read model '", source, "': the file has no scene graph");
 
@@ -618,12 +639,13 @@ const aiScene& readModel(Assimp::Importer& importer, const std::string& source, 
 // Triangles and materials into the scene, with the triangles that the early non-finite check
 // dropped added to the counts.
 void importGeometry(const aiScene& ai, const std::vector<FlatNode>& nodes, const fs::path& path,
-                    const NonFiniteScan& nonFinite, bool sanitize, Scene& scene) {
+                    const NonFiniteScan& nonFinite, const std::vector<GltfMaterialExtras>& extras, bool sanitize,
+                    Scene& scene) {
     const std::string source = path.string();
     WorldGeometry geometry;
     std::vector<std::uint32_t> usedMaterials;
     gatherGeometry(ai, nodes, source, nonFinite.droppedTriangles, geometry, usedMaterials);
-    importMaterials(ai, usedMaterials, path, scene);
+    importMaterials(ai, usedMaterials, extras, path, scene);
     buildSceneGeometry(geometry, source, sanitize, scene);
     scene.report.sourceTriangles += nonFinite.droppedTriangles;
     scene.report.droppedTriangles += nonFinite.droppedTriangles;
@@ -656,11 +678,18 @@ Scene loadModelFile(const fs::path& path, const LoadOptions& options) {
     checkModelPath(path);
     const std::string source = path.string();
     precheckModelFile(path);
+    const std::optional<nlohmann::json> gltf = readGltfJson(path);
+    if (gltf) {
+        checkRequiredGltfExtensions(*gltf, source);
+        checkGltfResources(*gltf, path);
+    }
 
     Assimp::Importer importer;
     NonFiniteScan nonFinite;
     const aiScene& ai = readModel(importer, source, options.sanitize, nonFinite);
     const std::vector<FlatNode> nodes = flattenNodes(ai);
+    const std::vector<GltfMaterialExtras> extras = gltf ? gltfMaterialExtras(*gltf, ai, source)
+                                                        : std::vector<GltfMaterialExtras>{};
 
     Scene scene;
     scene.name = path.filename().string();
@@ -668,8 +697,9 @@ Scene loadModelFile(const fs::path& path, const LoadOptions& options) {
     scene.sourcePath = fs::absolute(path, ec).lexically_normal().string();
     if (scene.sourcePath.empty()) scene.sourcePath = source;
 
-    importGeometry(ai, nodes, path, nonFinite, options.sanitize, scene);
+    importGeometry(ai, nodes, path, nonFinite, extras, options.sanitize, scene);
     importCamerasAndLights(ai, nodes, isGltf(path), source, scene);
+    if (gltf) reportUnsupportedGltfFeatures(*gltf, source, scene.report);
     return scene;
 }
 

@@ -2,6 +2,11 @@
 
 #include <climits>
 #include <cstring>
+#include <fstream>
+#include <iterator>
+#include <vector>
+
+#include "scene/image_payload.hpp"
 
 #include <stb_image.h>  // implementation in libstb (Debian's libstb-dev)
 
@@ -46,12 +51,17 @@ bool tooLarge(bool headerRead, int width, int height, std::string& error) {
 
 }  // namespace
 
+// The file read whole: the payload check needs its size and header, and stb_image then decodes
+// from memory what was checked.
 std::optional<Texture> decodeImageFile(const std::filesystem::path& file, const std::string& name,
                                        std::string& error) {
-    int width = 0, height = 0, channels = 0;
-    if (tooLarge(stbi_info(file.c_str(), &width, &height, &channels) != 0, width, height, error)) return std::nullopt;
-    stbi_uc* pixels = stbi_load(file.c_str(), &width, &height, &channels, 4);
-    return adopt(pixels, width, height, name, error);
+    std::ifstream in(file, std::ios::binary);
+    if (!in) {
+        error = "can't fopen";
+        return std::nullopt;
+    }
+    const std::vector<std::uint8_t> bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    return decodeImageMemory(bytes.data(), bytes.size(), name, error);
 }
 
 std::optional<Texture> decodeImageMemory(const std::uint8_t* data, std::size_t size,
@@ -65,9 +75,14 @@ std::optional<Texture> decodeImageMemory(const std::uint8_t* data, std::size_t s
         return std::nullopt;
     }
     int width = 0, height = 0, channels = 0;
-    if (tooLarge(stbi_info_from_memory(data, static_cast<int>(size), &width, &height, &channels) != 0, width, height,
-                 error))
-        return std::nullopt;
+    const bool headerRead = stbi_info_from_memory(data, static_cast<int>(size), &width, &height, &channels) != 0;
+    if (tooLarge(headerRead, width, height, error)) return std::nullopt;
+    if (headerRead) {
+        if (std::optional<std::string> reason = implausibleImagePayload(data, size, width, height)) {
+            error = *reason;
+            return std::nullopt;
+        }
+    }
     stbi_uc* pixels =
         stbi_load_from_memory(data, static_cast<int>(size), &width, &height, &channels, 4);
     return adopt(pixels, width, height, name, error);

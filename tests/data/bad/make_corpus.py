@@ -112,5 +112,8 @@ write('png_wrong_magic.png', b'\x89PNX' + good_png[4:])
 write('png_huge_dims.png', png(100000, 100000, truncate=None))
 write('png_zero_size.png', png(0, 0, b''))
 write('jpg_truncated.jpg', b'\xff\xd8\xff\xe0\x00\x10JFIF\x00\x01\x01\x00\x00\x01\x00\x01\x00\x00\xff\xc0\x00\x11\x08\xff\xff\xff\xff')
+# 19 bytes declaring 9265x12576 uncompressed texels: stb_image would allocate 466 MB (1 GB and 3 s
+# in all) before finding the file empty; refused from the header (engine/scene/image_payload.hpp).
+write('tga_huge_dims.tga', struct.pack('<BBBHHBHHHHBB', 0, 0, 2, 0, 0, 0, 0, 0, 9265, 12576, 24, 0) + b'\x00')
 write('bmp_huge_dims.bmp', b'BM' + struct.pack('<IHHI', 54, 0, 0, 54) +
       struct.pack('<IiiHHIIiiII', 40, 60000, 60000, 1, 32, 0, 0, 2835, 2835, 0, 0))
