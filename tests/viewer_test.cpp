@@ -104,6 +104,8 @@ TEST(Viewer, ScriptedSessionOnCornell) {
                                        << "wait 2\n"
                                        << "screenshot " << shot("panel") << "\n"
                                        << "key F1\n"
+                                       << "screenshot " << shot("lit_few_samples") << "\n"
+                                       << "wait 70\n"  // at rest: the viewer averages up to 64 samples
                                        << "screenshot " << shot("lit") << "\n"
                                        << "key G\n"
                                        << "screenshot " << shot("gi_off") << "\n"
@@ -125,7 +127,7 @@ TEST(Viewer, ScriptedSessionOnCornell) {
                                        << "screenshot " << shot("albedo") << "\n"
                                        << "key 1\nhold W 10\nmouse drag 40 -10\n"
                                        << "screenshot " << shot("moved") << "\n"
-                                       << "key Home\n"
+                                       << "key Home\nwait 70\n"
                                        << "screenshot " << shot("home") << "\n"
                                        << "hold Down 20\n"
                                        << "screenshot " << shot("light_tilted") << "\n"
@@ -185,7 +187,13 @@ TEST(Viewer, ScriptedSessionOnCornell) {
     EXPECT_GT(meanLuminance(albedo, ceiling), 100.0);
     EXPECT_GT(meanLuminance(indirect, ceiling), 3.0);
 
-    // Camera: moving changes the view, Home brings back exactly the start frame.
+    // At rest the viewer averages jittered samples: the converged frame differs from the first
+    // few a little, at edges (anti-aliasing), not as a whole.
+    const Image8 fewSamples = readPng(shot("lit_few_samples"));
+    const double accumulated = meanDifference(fewSamples, lit, whole(lit));
+    EXPECT_GT(accumulated, 0.02);
+    EXPECT_LT(accumulated, 3.0);
+    // Camera: moving changes the view, Home brings back exactly the start frame (converged alike).
     EXPECT_GT(meanDifference(moved, lit, whole(lit)), 5.0);
     EXPECT_LE(meanDifference(home, lit, whole(lit)), 0.01);
     // Arrow keys tilt the light (Cornell has one spot, pointing down): the lit pool moves.
@@ -196,7 +204,7 @@ TEST(Viewer, ScriptedSessionOnCornell) {
     EXPECT_GT(meanLuminance(resized, whole(resized)), 20.0);
 
     std::printf("[ viewer   ] panel diff %.1f; ceiling %.1f with GI, %.1f without, %.1f without photons; raw-node diff %.2f; "
-                "voxel diff %.1f; direct/albedo diff %.1f\n",
+                "voxel diff %.1f; direct/albedo diff %.1f; converged against the first samples %.2f\n",
                 panelDifference, ceilingOn, ceilingOff, meanLuminance(photonsOff, ceiling), rawDifference, voxelDifference,
-                directAlbedo);
+                directAlbedo, accumulated);
 }
