@@ -130,7 +130,7 @@ bool sampleRadiance(vec3 p, float lod, vec3 origin, vec3 direction, vec3 invDire
     int coarseLevel = max(fineLevel - 1, 0);
     float blend = fract(lod);
     uvec3 cell = uvec3(clamp(floor(p), vec3(0.0), vec3(float((1 << uLevels) - 1))));
-    uint node = 0u, coarseNode = fineLevel == 0 ? 0u : NONE, fineNode = NONE;
+    uint node = 0u, coarseNode = coarseLevel == 0 ? 0u : NONE, fineNode = NONE;
     int level = 0;
     uint finerNode = NONE;  // one level below the fine one, for the directions across the cone
     for (level = 1; level <= fineLevel; ++level) {

@@ -5,7 +5,9 @@
 //
 // The bounds are what the engine reaches today with a margin for llvmpipe's and the reference's
 // noise (each test prints its numbers); docs/benchmark.md gives the full measurement on every view.
+#include <algorithm>
 #include <cmath>
+#include <vector>
 #include <cstdio>
 #include <fstream>
 
@@ -13,6 +15,7 @@
 
 #include "core/image.hpp"
 #include "metrics/region_ratio.hpp"
+#include "test_models.hpp"
 #include "test_util.hpp"
 
 using namespace vct;
@@ -21,8 +24,9 @@ namespace {
 
 // Measured (docs/benchmark.md) and the bounds asserted, with room for noise.
 constexpr double kLeakLargestPixel = 0.04;                 // of the lit floor's radiance
-constexpr double kCornellMean[2] = {0.7, 0.95}, kCornellCells[2] = {0.3, 1.35};
+constexpr double kCornellMean[2] = {0.8, 1.1}, kCornellCells[2] = {0.4, 1.35};
 constexpr double kSponzaMean[2] = {0.75, 1.0}, kSponzaCells[2] = {0.6, 1.3};
+constexpr double kFurnaceMeanTolerance = 0.05, kFurnaceLowTolerance = 0.1;  // of 1.5
 
 ImageF subtract(const ImageF& a, const ImageF& b) {
     ImageF d = a;
@@ -122,6 +126,27 @@ TEST(GiAccuracy, ClosedRoomBesideASunlitOneStaysDark) {
                 100.0 * mean / litFloor, 100.0 * largest / litFloor);
     EXPECT_LE(mean, 0.005 * litFloor);
     EXPECT_LE(largest, kLeakLargestPixel * litFloor);
+}
+
+TEST(GiAccuracy, WhiteFurnaceGetsOneBounce) {
+    // A closed box whose walls (albedo 0.5) emit Le = 1: with one bounce every wall shows
+    // Le + ρ·Le = 1.5, whatever the view (the reference's furnace test checks the same series).
+    // The default sun outside lights the walls' outer faces, which the inside must not see. Every
+    // cone meets a wall, so this measures the energy the cones lose on their way.
+    const auto dir = test::testDir();
+    const auto model = test::writeFurnace(dir, 0.5f, 1.0f);
+    const ImageF image = render(dir, "furnace", "--scene " + model.string() + test::kInsideFurnace);
+    std::vector<double> pixels;
+    for (std::size_t i = 0; i < image.rgba.size(); i += 4)
+        pixels.push_back((image.rgba[i] + image.rgba[i + 1] + image.rgba[i + 2]) / 3.0);
+    std::sort(pixels.begin(), pixels.end());
+    double sum = 0.0;
+    for (double p : pixels) sum += p;
+    const double mean = sum / double(pixels.size()), low = pixels[pixels.size() / 20], high = pixels.back();
+    std::printf("[ furnace  ] one bounce: mean %.4f (1.5 expected), 5th percentile %.4f, largest %.4f\n", mean, low, high);
+    EXPECT_NEAR(mean, 1.5, kFurnaceMeanTolerance * 1.5);
+    EXPECT_GE(low, (1.0 - kFurnaceLowTolerance) * 1.5);
+    EXPECT_LE(high, 1.5 * 1.01);
 }
 
 TEST(GiAccuracy, IndirectLightMatchesThePathTracerOnCornell) {

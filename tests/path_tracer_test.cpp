@@ -48,32 +48,6 @@ bool bitIdentical(const ImageF& a, const ImageF& b) {
     return a.width == b.width && a.height == b.height && a.rgba == b.rgba;
 }
 
-// A closed box ±1 with one material of albedo rho and emission Le, flat-shaded: written with one
-// explicit normal per face, so that shading and geometric normals agree and the furnace
-// conserves energy exactly. (ObjWriter writes no normals; the loader then smooths them across
-// the box's edges.)
-std::filesystem::path furnaceModel(const std::filesystem::path& dir, float rho, float le) {
-    std::ofstream(dir / "furnace.mtl") << "newmtl wall\nKd " << rho << " " << rho << " " << rho << "\nKe " << le << " "
-                                       << le << " " << le << "\n";
-    std::ofstream obj(dir / "furnace.obj");
-    obj << "mtllib furnace.mtl\nusemtl wall\n";
-    const glm::vec3 c[8] = {{-1, -1, -1}, {1, -1, -1}, {1, 1, -1}, {-1, 1, -1},
-                            {-1, -1, 1},  {1, -1, 1},  {1, 1, 1},  {-1, 1, 1}};
-    const int faces[6][4] = {{0, 3, 2, 1}, {4, 5, 6, 7}, {0, 4, 7, 3}, {1, 2, 6, 5}, {0, 1, 5, 4}, {3, 7, 6, 2}};
-    for (const glm::vec3& v : c) obj << "v " << v.x << " " << v.y << " " << v.z << "\n";
-    for (int f = 0; f < 6; ++f) {
-        const glm::vec3 n = glm::normalize(glm::cross(c[faces[f][1]] - c[faces[f][0]], c[faces[f][2]] - c[faces[f][0]]));
-        obj << "vn " << n.x << " " << n.y << " " << n.z << "\n";
-    }
-    for (int f = 0; f < 6; ++f) {
-        const int n = f + 1;
-        const int* q = faces[f];
-        obj << "f " << q[0] + 1 << "//" << n << " " << q[1] + 1 << "//" << n << " " << q[2] + 1 << "//" << n << "\n";
-        obj << "f " << q[0] + 1 << "//" << n << " " << q[2] + 1 << "//" << n << " " << q[3] + 1 << "//" << n << "\n";
-    }
-    return dir / "furnace.obj";
-}
-const std::string kInsideFurnace = " --eye 0,0,0.5 --target 0,0,-1 --fov 70 --width 24 --height 24 ";
 
 }  // namespace
 
@@ -115,8 +89,8 @@ TEST(PathTracer, SunOnPlaneMatchesLambertWithAndWithoutBounces) {
 // Le/(1 − ρ) = 2 and the variance output predicts the actual error.
 TEST(PathTracer, WhiteFurnaceConvergesToGeometricSeries) {
     const auto dir = test::testDir();
-    const auto model = furnaceModel(dir, 0.5f, 1.0f);
-    const std::string scene = "--scene " + path(model) + kInsideFurnace;
+    const auto model = test::writeFurnace(dir, 0.5f, 1.0f);
+    const std::string scene = "--scene " + path(model) + test::kInsideFurnace;
     double series = 0.0;
     for (int bounces = 0; bounces <= 3; ++bounces) {
         series += std::pow(0.5, bounces);
@@ -157,7 +131,7 @@ TEST(PathTracer, SmoothedNormalsDoNotLeakLightThroughClosedWalls) {
     obj.box({-1, -1, -1}, {1, 1, 1});
     const auto model = obj.write(dir, "smooth");
     std::ofstream(dir / "smooth.mtl", std::ios::app) << "Ke 1 1 1\n";
-    const ImageF image = renderReference("--scene " + path(model) + kInsideFurnace + "--spp 16 --bounces 2 --direct-out " +
+    const ImageF image = renderReference("--scene " + path(model) + test::kInsideFurnace + "--spp 16 --bounces 2 --direct-out " +
                                              path(dir / "d.pfm"),
                                          dir / "s.pfm");
     const ImageF direct = readHdrImage(dir / "d.pfm");

@@ -57,4 +57,32 @@ private:
     std::string body_;
 };
 
+// A closed box ±1 with one material of albedo rho and emission Le, flat-shaded: written with one
+// explicit normal per face, so that shading and geometric normals agree and the furnace
+// conserves energy exactly. (ObjWriter writes no normals; the loader then smooths them across
+// the box's edges.)
+inline std::filesystem::path writeFurnace(const std::filesystem::path& dir, float rho, float le) {
+    std::ofstream(dir / "furnace.mtl") << "newmtl wall\nKd " << rho << " " << rho << " " << rho << "\nKe " << le << " "
+                                       << le << " " << le << "\n";
+    std::ofstream obj(dir / "furnace.obj");
+    obj << "mtllib furnace.mtl\nusemtl wall\n";
+    const glm::vec3 c[8] = {{-1, -1, -1}, {1, -1, -1}, {1, 1, -1}, {-1, 1, -1},
+                            {-1, -1, 1},  {1, -1, 1},  {1, 1, 1},  {-1, 1, 1}};
+    const int faces[6][4] = {{0, 3, 2, 1}, {4, 5, 6, 7}, {0, 4, 7, 3}, {1, 2, 6, 5}, {0, 1, 5, 4}, {3, 7, 6, 2}};
+    for (const glm::vec3& v : c) obj << "v " << v.x << " " << v.y << " " << v.z << "\n";
+    for (int f = 0; f < 6; ++f) {
+        const glm::vec3 n = glm::normalize(glm::cross(c[faces[f][1]] - c[faces[f][0]], c[faces[f][2]] - c[faces[f][0]]));
+        obj << "vn " << n.x << " " << n.y << " " << n.z << "\n";
+    }
+    for (int f = 0; f < 6; ++f) {
+        const int n = f + 1;
+        const int* q = faces[f];
+        obj << "f " << q[0] + 1 << "//" << n << " " << q[1] + 1 << "//" << n << " " << q[2] + 1 << "//" << n << "\n";
+        obj << "f " << q[0] + 1 << "//" << n << " " << q[2] + 1 << "//" << n << " " << q[3] + 1 << "//" << n << "\n";
+    }
+    return dir / "furnace.obj";
+}
+// A camera inside it, looking at the −z wall (options of vct render and vct reference).
+inline const std::string kInsideFurnace = " --eye 0,0,0.5 --target 0,0,-1 --fov 70 --width 24 --height 24 ";
+
 }  // namespace vct::test

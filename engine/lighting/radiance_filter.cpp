@@ -41,8 +41,10 @@ void RadianceFilter::leaves(const Octree& octree, RadianceVolume& volume) {
     const int leafLevel = octree.levels - 1;
     gl::ComputeCall call = over(leaves_, octree, volume, leafLevel);
     call.storage(gl::SSBO_CELL_OPACITY, octree.cellOpacity)
+        .uniform("uHasEmissive", octree.hasEmissive ? 1 : 0)
         .texture(gl::TEXTURE_OPACITY_PLUS, octree.brickOpacityPlus.id())
         .texture(gl::TEXTURE_OPACITY_MINUS, octree.brickOpacityMinus.id());
+    if (octree.hasEmissive) call.storage(gl::SSBO_CELL_EMISSIVE, octree.cellEmissive);
     for (int i = 0; i < 6; ++i)
         call.image(gl::IMAGE_DIRECTIONAL_RADIANCE + i, volume.directional[i].id(), GL_WRITE_ONLY, GL_RGBA32F, true);
     listDispatch_.dispatch(call, volume, kBorderCountSlot + unsigned(leafLevel), kBarrier);
