@@ -1,6 +1,5 @@
 #include "scene/texture_library.hpp"
 
-#include <cctype>
 #include <cstdint>
 
 #include <assimp/scene.h>
@@ -8,31 +7,12 @@
 #include "core/error.hpp"
 #include "core/log.hpp"
 #include "scene/texture_decode.hpp"
+#include "scene/uri_path.hpp"
 
 namespace fs = std::filesystem;
 
 namespace vct {
 namespace {
-
-std::string percentDecode(const std::string& s) {
-    std::string out;
-    out.reserve(s.size());
-    for (std::size_t i = 0; i < s.size(); ++i) {
-        if (s[i] == '%' && i + 2 < s.size() && std::isxdigit(static_cast<unsigned char>(s[i + 1])) &&
-            std::isxdigit(static_cast<unsigned char>(s[i + 2]))) {
-            out.push_back(static_cast<char>(std::stoi(s.substr(i + 1, 2), nullptr, 16)));
-            i += 2;
-        } else {
-            out.push_back(s[i]);
-        }
-    }
-    return out;
-}
-
-bool isRegularFile(const fs::path& p) {
-    std::error_code ec;
-    return fs::is_regular_file(p, ec);
-}
 
 // The paths to try for a reference written in a material: as written, then the usual repairs
 // for paths written on another system: backslashes, %-encoded URIs, and finally the bare file
@@ -41,7 +21,7 @@ std::vector<std::string> candidatePaths(const std::string& raw) {
     std::string slashes = raw;
     for (char& c : slashes)
         if (c == '\\') c = '/';
-    return {raw, slashes, percentDecode(slashes), fs::path(slashes).filename().string()};
+    return {raw, slashes, percentDecoded(slashes), fs::path(slashes).filename().string()};
 }
 
 // An uncompressed embedded texture: an array of aiTexel, BGRA.
