@@ -97,7 +97,7 @@ TEST(ConeSpread, AxisWeightsMatchTheModelAndTheConeAndAreNeverNegative) {
     for (const glm::vec3& axis : axes)
         for (float t : tanHalfAngles) cases.push_back({glm::vec4(axis, t), glm::vec4(0.0f), glm::vec4(0.0f)});
 
-    auto context = gl::createContext(gl::Backend::OSMesa);
+    auto context = gl::createContext(gl::defaultBackend());
     setenv("VCT_SHADER_DIR", dir.c_str(), 1);
     const gl::Program program = gl::buildProgram({{GL_COMPUTE_SHADER, "cone_spread_probe.comp"}});
     unsetenv("VCT_SHADER_DIR");

@@ -175,7 +175,7 @@ TEST(Gi, InjectionStoresLambertRadianceAndHalfForHalfShadowedVoxels) {
         Light sun;
         sun.direction = glm::dvec3(std::sin(theta), -std::cos(theta), 0.0);
         sun.irradiance = E;
-        auto context = gl::createContext(gl::Backend::OSMesa);
+        auto context = gl::createContext(gl::defaultBackend());
         const auto renderer = test::renderRadianceFrame(scene, {sun}, 6, 2048);
         const Octree& octree = renderer->octree()->octree();
         const auto radiance = test::readBuffer<glm::vec4>(renderer->radiance()->cellRadiance, octree.cellCount());
@@ -214,7 +214,7 @@ TEST(Gi, HalfShadowedVoxelsStoreHalf) {
     Light sun;
     sun.direction = {0.0, -1.0, 0.0};
     sun.irradiance = 4.0;
-    auto context = gl::createContext(gl::Backend::OSMesa);
+    auto context = gl::createContext(gl::defaultBackend());
     const auto renderer = test::renderRadianceFrame(scene, {sun}, 6, 2048);
     const Octree& octree = renderer->octree()->octree();
     const auto radiance = test::readBuffer<glm::vec4>(renderer->radiance()->cellRadiance, octree.cellCount());

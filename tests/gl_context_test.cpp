@@ -70,7 +70,7 @@ TEST(Shader, BindingsNamedInTheShaderInterfaceAreTheOnesCppBinds) {
            "layout(std430, binding = SSBO_CELL_AREA) buffer CellArea { float cellArea[]; };\n"
            "layout(binding = TEXTURE_OPACITY_PLUS) uniform sampler3D uOpacity;\n"
            "void main() { cellArea[0] = texture(uOpacity, vec3(0.5)).x; }\n";
-    auto context = gl::createContext(gl::Backend::OSMesa);
+    auto context = gl::createContext(gl::defaultBackend());
     setenv("VCT_SHADER_DIR", dir.c_str(), 1);
     const gl::Program program = gl::buildProgram({{GL_COMPUTE_SHADER, "bindings.comp"}});
     unsetenv("VCT_SHADER_DIR");
@@ -89,7 +89,7 @@ TEST(Shader, CompileErrorNamesFileAndLine) {
     std::ofstream(dir / "bad.comp") << "#version 450\nlayout(local_size_x = 1) in;\n#include \"broken.glsl\"\n"
                                        "void main() {}\n";
     std::ofstream(dir / "broken.glsl") << "// line 1\n// line 2\nfloat f() { return undefined_symbol; }\n";
-    auto context = gl::createContext(gl::Backend::OSMesa);
+    auto context = gl::createContext(gl::defaultBackend());
     setenv("VCT_SHADER_DIR", dir.c_str(), 1);
     std::string message;
     try {

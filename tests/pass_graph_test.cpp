@@ -47,7 +47,7 @@ std::vector<Light> turned(std::vector<Light> lights) {
 
 class PassGraphTest : public ::testing::Test {
 protected:
-    void SetUp() override { context_ = gl::createContext(gl::Backend::OSMesa); }
+    void SetUp() override { context_ = gl::createContext(gl::defaultBackend()); }
     std::unique_ptr<gl::Context> context_;
     Scene scene_ = makeCornellBox();
 };

@@ -273,7 +273,7 @@ TEST(Slabs, RadianceSeenFromTheDarkSideOfAWallIsDark) {
     Light sun;
     sun.direction = glm::dvec3(std::cos(theta), -std::sin(theta), 0.0);
     sun.irradiance = E;
-    auto context = gl::createContext(gl::Backend::OSMesa);
+    auto context = gl::createContext(gl::defaultBackend());
     const auto renderer = test::renderRadianceFrame(scene, {sun}, kWallLevels, 512);
     const Octree& octree = renderer->octree()->octree();
     const RadianceVolume& volume = *renderer->radiance();

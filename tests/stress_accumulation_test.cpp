@@ -100,7 +100,7 @@ TEST(StressAccumulation, MillionsOfPhotonsInOneVoxelStoreTheRightRadiance) {
     camera.eye = {0.0, 2.0, 1.0};
     camera.target = {0.0, 0.0, 0.0};
 
-    auto context = gl::createContext(gl::Backend::OSMesa);
+    auto context = gl::createContext(gl::defaultBackend());
     RenderSettings settings = smallSettings(16, 16, 5, 2048);
     Renderer renderer(scene, settings);
     renderer.renderFrame(camera);
@@ -152,7 +152,7 @@ TEST(StressAccumulation, ImagesScaleLinearlyWithLightIntensity) {
     // for the final image and for the indirect light alone. The fixed point follows the light:
     // wattsPerUnit × 2^24 = the brightest texel's flux.
     const Scene scene = makeCornellBox();
-    auto context = gl::createContext(gl::Backend::OSMesa);
+    auto context = gl::createContext(gl::defaultBackend());
     RenderSettings settings = smallSettings(64, 48, 6, 512);
     Renderer renderer(scene, settings);
     auto render = [&](double intensity, Aov aov) {

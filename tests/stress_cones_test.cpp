@@ -92,7 +92,7 @@ Camera look(glm::dvec3 eye, glm::dvec3 target, double fov = 50.0) {
 
 TEST(StressCones, CornellFromEverywhereIsFiniteAndBounded) {
     const Scene scene = makeCornellBox();
-    auto context = gl::createContext(gl::Backend::OSMesa);
+    auto context = gl::createContext(gl::defaultBackend());
     RenderSettings settings = smallSettings(48, 36, 6, 512);
     Renderer renderer(scene, settings);
     const std::vector<ConeCase> cases = {
@@ -130,7 +130,7 @@ TEST(StressCones, LongConesAcrossALargeSparseVolume) {
     sun.direction = glm::normalize(glm::dvec3(0.3, -1.0, 0.2));
     sun.irradiance = 2.0;
     scene.lights = {sun};
-    auto context = gl::createContext(gl::Backend::OSMesa);
+    auto context = gl::createContext(gl::defaultBackend());
     RenderSettings settings = smallSettings(24, 24, 9, 256);
     Renderer renderer(scene, settings);
     const Checked a = checkCones(renderer, settings, {"512³, floor facing the far emitter (16)", look({0.5, 0.8, 0.5}, {0.5, 0.0, 0.5001}, 60.0), 16});

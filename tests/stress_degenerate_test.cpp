@@ -112,7 +112,7 @@ TEST(StressDegenerate, LitFrameOfDegenerateGeometryHasNoNaN) {
     Camera camera;
     camera.eye = {0.5, 1.5, 2.5};
     camera.target = {0.5, 0.3, 0.5};
-    auto context = gl::createContext(gl::Backend::OSMesa);
+    auto context = gl::createContext(gl::defaultBackend());
     RenderSettings settings = smallSettings(48, 36, 5, 256);
     Renderer renderer(scene, settings);
     for (Aov aov : {Aov::Final, Aov::Direct, Aov::Indirect, Aov::Ao, Aov::Normal}) {
@@ -160,7 +160,7 @@ TEST(StressDegenerate, ModelThatVoxelizesToNothingRendersBlack) {
     Camera camera;
     camera.eye = {0.3, 2.0, 0.3};
     camera.target = {0.3, 0.0, 0.31};
-    auto context = gl::createContext(gl::Backend::OSMesa);
+    auto context = gl::createContext(gl::defaultBackend());
     Renderer renderer(scene, smallSettings(32, 24, 5, 256));
     renderer.renderFrame(camera);
     EXPECT_EQ(renderer.octree()->octree().cellCount(), 0u);

@@ -125,7 +125,7 @@ TEST(StressNonFinite, GltfPositionsNormalsAndUvsAreRefusedOrSanitised) {
     sun.direction = glm::normalize(glm::dvec3(0.2, -1.0, 0.1));
     sun.irradiance = 3.0;
     lit.lights = {sun};
-    auto context = gl::createContext(gl::Backend::OSMesa);
+    auto context = gl::createContext(gl::defaultBackend());
     Renderer renderer(lit, smallSettings(32, 24, 5, 256));
     Camera camera;
     camera.eye = {0, 2, 2};
@@ -181,7 +181,7 @@ TEST(StressNonFinite, LightAndCameraValuesOnTheCommandLineAreRefused) {
 
 TEST(StressNonFinite, LightCameraAndSceneValuesThroughTheApiAreRefused) {
     Scene scene = makeCornellBox();
-    auto context = gl::createContext(gl::Backend::OSMesa);
+    auto context = gl::createContext(gl::defaultBackend());
     Renderer renderer(scene, smallSettings(32, 24, 5, 256));
     renderer.renderFrame(scene.cameras[0]);
     const ImageF good = renderer.readHdr();

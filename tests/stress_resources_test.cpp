@@ -98,7 +98,7 @@ TEST(StressResources, EstimateIsAConservativeBoundOfThePoolsUsed) {
     // Stated: the estimate is at least what the renderer's pools hold and at most 2.5× it.
     const Scene scene = makeCornellBox();
     for (int levels : {5, 6, 7}) {
-        auto context = gl::createContext(gl::Backend::OSMesa);
+        auto context = gl::createContext(gl::defaultBackend());
         const RenderSettings settings = smallSettings(96, 72, levels, 512);
         Renderer renderer(scene, settings);
         renderer.renderFrame(scene.cameras[0]);

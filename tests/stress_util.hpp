@@ -31,7 +31,7 @@ inline RenderSettings smallSettings(int width = 64, int height = 48, int levels 
 
 // One frame of `scene` seen by `camera`; the HDR output of the settings' AOV.
 inline ImageF renderInProcess(const Scene& scene, const Camera& camera, const RenderSettings& settings) {
-    auto context = gl::createContext(gl::Backend::OSMesa);
+    auto context = gl::createContext(gl::defaultBackend());
     Renderer renderer(scene, settings);
     renderer.renderFrame(camera);
     return renderer.readHdr();

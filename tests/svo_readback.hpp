@@ -92,7 +92,7 @@ struct GpuOctreeData {
 class SvoHarness {
 public:
     explicit SvoHarness(const Scene& scene) : scene_(scene) {
-        context_ = gl::createContext(gl::Backend::OSMesa);
+        context_ = gl::createContext(gl::defaultBackend());
     }
     // Through the renderer's own octree passes, as `vct info --voxel-levels` does.
     GpuOctreeData build(int levels) {

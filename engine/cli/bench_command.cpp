@@ -29,7 +29,7 @@ struct BenchOptions {
     bool quick = false;
     std::string out;
     std::string cache;
-    std::string backend = "osmesa";
+    std::string backend = gl::defaultBackendName();
     int threads = 0;
     int repeats = 0;  // 0 = the sweep's
     bool refreshReference = false;

@@ -15,7 +15,7 @@ namespace {
 struct InfoOptions {
     SceneOptions scene;
     bool gl = false;
-    std::string backend = "osmesa";
+    std::string backend = gl::defaultBackendName();
     int voxelLevels = 0;
 };
 

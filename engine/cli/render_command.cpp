@@ -23,7 +23,7 @@ struct RenderOptions {
     std::string out = "vct.png";
     std::string hdrOut;
     std::string timingsOut;
-    std::string backend = "osmesa";
+    std::string backend = gl::defaultBackendName();
     int width = 1280;
     int height = 720;
     int frames = 1;

@@ -17,6 +17,13 @@ Backend parseBackend(const std::string& name) {
     fail("unknown backend '", name, "'; use osmesa (offscreen, CPU), egl (headless GPU) or glfw (window)");
 }
 
+Backend defaultBackend() { return parseBackend(defaultBackendName()); }
+
+std::string defaultBackendName() {
+    const char* chosen = std::getenv("VCT_BACKEND");
+    return chosen && *chosen ? chosen : "osmesa";  // an unknown name fails where it is parsed, naming the valid ones
+}
+
 const char* backendName(Backend backend) {
     switch (backend) {
         case Backend::OSMesa: return "osmesa";

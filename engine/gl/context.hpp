@@ -15,6 +15,11 @@ enum class Backend { OSMesa, EGL, GLFW };
 
 Backend parseBackend(const std::string& name);  // throws listing the valid names
 const char* backendName(Backend backend);
+// The backend used when none is chosen: $VCT_BACKEND if set (osmesa, egl or glfw), else osmesa.
+// The commands' --backend defaults and the tests' contexts follow it, so that one variable moves
+// everything onto a GPU (benchmarks/gpu.sh runs the test suite with VCT_BACKEND=egl).
+Backend defaultBackend();
+std::string defaultBackendName();
 
 struct ContextInfo {
     std::string backend;

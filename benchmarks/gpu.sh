@@ -1,0 +1,110 @@
+#!/usr/bin/env bash
+# The engine on a GPU, in one command: build, run the whole test suite on the EGL backend, then
+# time Sponza pass by pass in three scenarios (a full frame, a frame after the light moved, a frame
+# after the camera moved) at 256³ and 512³, and write the table with the GL renderer's name.
+#
+#   bash benchmarks/gpu.sh              1920x1080, voxel levels 8 and 9 (on a GPU)
+#   bash benchmarks/gpu.sh --small      320x180, voxel levels 6 and 7: the same steps, minutes on llvmpipe
+#   options: --no-build (use the build/ already there: an offline machine, see docs/benchmark.md),
+#            --no-tests (skip the test suite)
+# Environment: VCT_BACKEND (default egl), VCT_ASSET_DIR (where Sponza is; docs/cli.md).
+# Writes benchmarks/results/gpu_<renderer>.md and one timings JSON per scenario and level beside it
+# (schema: docs/timings.md). <renderer> is made from the GL renderer string, so a dry run on
+# llvmpipe never overwrites a GPU's results.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+width=1920 height=1080 levels=(8 9) build=1 tests=1
+for option in "$@"; do
+    case "$option" in
+        --small) width=320 height=180 levels=(6 7) ;;
+        --no-build) build=0 ;;
+        --no-tests) tests=0 ;;
+        *) echo "gpu.sh: unknown option '$option' (use --small, --no-build, --no-tests)" >&2; exit 2 ;;
+    esac
+done
+export VCT_BACKEND="${VCT_BACKEND:-egl}"
+[ "$build" = 1 ] && bash .ci/setup
+[ -x build/vct ] || { echo "gpu.sh: build/vct is missing; run without --no-build or build it first" >&2; exit 1; }
+
+out=benchmarks/results
+mkdir -p "$out"
+scratch=$(mktemp -d)
+trap 'rm -rf "$scratch"' EXIT
+
+tests_line="not run (--no-tests)"
+if [ "$tests" = 1 ]; then
+    echo "gpu.sh: the test suite on $VCT_BACKEND..." >&2
+    if ctest --test-dir build --output-on-failure -j"$(nproc)" >"$scratch/ctest.log" 2>&1; then status=passed; else status=FAILED; fi
+    tests_line="$status: $(grep -E 'tests passed|tests failed' "$scratch/ctest.log" | tail -1)"
+    echo "gpu.sh: tests $tests_line" >&2
+fi
+
+declare -A scenario_options=(
+    [full]="--full-frames"
+    [light_moved]="--light-path orbit"
+    [camera_moved]="--camera-path orbit"
+)
+scenarios=(full light_moved camera_moved)
+for level in "${levels[@]}"; do
+    for scenario in "${scenarios[@]}"; do
+        echo "gpu.sh: Sponza ${width}x${height}, 2^$level voxels, $scenario..." >&2
+        # shellcheck disable=SC2086
+        ./build/vct render -q --scene sponza --voxel-levels "$level" --width "$width" --height "$height" --frames 2 \
+            ${scenario_options[$scenario]} --out "$scratch/$scenario.png" --timings "$scratch/${scenario}_L$level.json"
+    done
+done
+
+# The GL renderer string names the results: "NVIDIA H100 80GB HBM3/PCIe/SSE2" -> nvidia_h100_80gb_hbm3.
+renderer=$(sed -n 's/^ *"renderer": "\(.*\)",*$/\1/p' "$scratch/full_L${levels[0]}.json" | head -1)
+label=$(echo "${renderer%%/*}" | tr 'A-Z' 'a-z' | sed 's/[^a-z0-9]\{1,\}/_/g; s/^_//; s/_$//' | cut -c1-40)
+[ "$width" = 1920 ] || label="${label}_small"
+for json in "$scratch"/*.json; do cp "$json" "$out/gpu_${label}_$(basename "$json")"; done
+
+# Per-pass GPU milliseconds from a timings JSON (pretty-printed, keys sorted: each element of
+# "passes" is cpu_ms, gpu_ms, name), and the frame's total: "name ms" lines, "total ms" last.
+pass_times() {
+    awk '
+        /^  "passes": \[/ { inside = 1; next }
+        inside && /^  \]/ { inside = 0 }
+        inside && /"gpu_ms":/ { gsub(/[",]/, ""); gpu = $2 }
+        inside && /"name":/ { gsub(/[",]/, ""); print $2, gpu }
+        /^  "total_gpu_ms":/ { gsub(/[",]/, ""); total = $2 }
+        END { print "total", total }
+    ' "$1"
+}
+
+table="$out/gpu_${label}.md"
+{
+    echo "# vct on $renderer"
+    echo
+    echo "Written by \`benchmarks/gpu.sh$([ "$width" = 1920 ] || echo ' --small')\` on $(date -u +%Y-%m-%d) ($VCT_BACKEND backend)."
+    echo "Sponza ${width}x${height}, the second frame of each scenario (the first builds everything; a"
+    echo "full frame re-runs every pass as if the geometry changed). GPU milliseconds per pass from"
+    echo "timer queries; a pass the scenario does not need is skipped (blank). Test suite: $tests_line."
+    echo
+    passes=$(pass_times "$scratch/full_L${levels[0]}.json" | awk '$1 != "total" { print $1 }')
+    header="| pass |" rule="|---|"
+    for level in "${levels[@]}"; do
+        for scenario in "${scenarios[@]}"; do
+            header="$header $scenario 2^$level |"
+            rule="$rule---:|"
+        done
+    done
+    echo "$header"
+    echo "$rule"
+    for pass in $passes total; do
+        row="| $pass |"
+        for level in "${levels[@]}"; do
+            for scenario in "${scenarios[@]}"; do
+                ms=$(pass_times "$scratch/${scenario}_L$level.json" | awk -v p="$pass" '$1 == p { printf "%.3f", $2 }')
+                row="$row ${ms} |"
+            done
+        done
+        echo "$row"
+    done
+    echo
+    echo "Timings JSONs: \`gpu_${label}_<scenario>_L<levels>.json\` beside this file."
+} >"$table"
+echo "gpu.sh: wrote $table" >&2
+cat "$table"
