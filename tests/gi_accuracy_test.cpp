@@ -27,6 +27,7 @@ constexpr double kLeakLargestPixel = 0.04;                 // of the lit floor's
 constexpr double kCornellMean[2] = {0.8, 1.1}, kCornellCells[2] = {0.4, 1.35};
 constexpr double kSponzaMean[2] = {0.75, 1.0}, kSponzaCells[2] = {0.6, 1.3};
 constexpr double kFurnaceMeanTolerance = 0.05, kFurnaceLowTolerance = 0.1;  // of 1.5
+constexpr double kFurnaceBouncesTolerance = 0.08;  // of 1.75 and 1.875
 
 ImageF subtract(const ImageF& a, const ImageF& b) {
     ImageF d = a;
@@ -147,6 +148,40 @@ TEST(GiAccuracy, WhiteFurnaceGetsOneBounce) {
     EXPECT_NEAR(mean, 1.5, kFurnaceMeanTolerance * 1.5);
     EXPECT_GE(low, (1.0 - kFurnaceLowTolerance) * 1.5);
     EXPECT_LE(high, 1.5 * 1.01);
+}
+
+TEST(GiAccuracy, WhiteFurnaceGetsMoreBounces) {
+    // The same furnace with 2 and 3 bounces: Le (1 + ρ + ρ²) = 1.75 and 1.875. Each gather loses
+    // what one bounce loses (the test above), and the losses compound.
+    const auto dir = test::testDir();
+    const auto model = test::writeFurnace(dir, 0.5f, 1.0f);
+    const double expected[2] = {1.75, 1.875};
+    for (int bounces : {2, 3}) {
+        const ImageF image = render(dir, "furnace" + std::to_string(bounces),
+                                    "--scene " + model.string() + test::kInsideFurnace + " --bounces " +
+                                        std::to_string(bounces));
+        double sum = 0.0;
+        for (std::size_t i = 0; i < image.rgba.size(); i += 4)
+            sum += (image.rgba[i] + image.rgba[i + 1] + image.rgba[i + 2]) / 3.0;
+        const double mean = sum / (double(image.width) * image.height), want = expected[bounces - 2];
+        std::printf("[ furnace  ] %d bounces: mean %.4f (%.4f expected, %+.1f %%)\n", bounces, mean, want,
+                    100.0 * (mean / want - 1.0));
+        EXPECT_NEAR(mean, want, kFurnaceBouncesTolerance * want) << bounces << " bounces";
+        EXPECT_LT(mean, want * 1.01) << "more light than the series holds";
+    }
+}
+
+TEST(GiAccuracy, MoreBouncesFollowThePathTracerOnCornell) {
+    const auto dir = test::testDir();
+    const std::string view = "--scene cornell --width 96 --height 72 --bounces 2";
+    const ImageF final = render(dir, "final", view), direct = render(dir, "direct", view + " --aov direct");
+    const auto full = dir / "reference.pfm", referenceDirect = dir / "reference_direct.pfm";
+    const test::CommandResult r = test::runVct("reference -q " + view + " --spp 512 -o " + full.string() +
+                                               " --direct-out " + referenceDirect.string());
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    const IndirectPair parts{subtract(final, direct), subtract(readHdrImage(full), readHdrImage(referenceDirect))};
+    expectIndirectWithin(parts, "Cornell 96x72, 2 bounces", kCornellMean[0], kCornellMean[1], kCornellCells[0],
+                         kCornellCells[1]);
 }
 
 TEST(GiAccuracy, IndirectLightMatchesThePathTracerOnCornell) {

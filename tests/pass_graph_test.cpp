@@ -209,6 +209,57 @@ TEST_F(PassGraphTest, PixelSamplesRerunOnlyTheCameraPassesAndAverage) {
     EXPECT_EQ(renderer.samplesInOutput(), 1);
 }
 
+TEST_F(PassGraphTest, BouncesFollowTheLightsAndTheirCountNeverTheCamera) {
+    RenderSettings s = smallSettings();
+    s.bounces = 2;
+    Renderer renderer(scene_, s);
+    const Camera camera = scene_.cameras[0];
+    renderer.renderFrame(camera);
+    Names everything = kEverything;
+    everything.insert(Pass::Bounce);
+    EXPECT_EQ(ran(renderer), everything) << "first frame";
+    EXPECT_EQ(renderer.statistics().bouncesGathered, 1u);
+
+    renderer.renderFrame(moved(camera));
+    EXPECT_EQ(ran(renderer), (Names{Pass::GBuffer, Pass::DirectLighting, Pass::ConeTrace, Pass::Composite}))
+        << "camera moved: no bounce is gathered again";
+
+    renderer.setLights(turned(renderer.lights()));
+    renderer.renderFrame(moved(camera));
+    EXPECT_EQ(ran(renderer), (Names{Pass::LightView, Pass::Inject, Pass::RadianceLeaves, Pass::RadianceMip, Pass::Bounce,
+                                    Pass::DirectLighting, Pass::ConeTrace, Pass::Composite}))
+        << "light moved";
+
+    s.bounces = 3;
+    renderer.setSettings(s);
+    renderer.renderFrame(moved(camera));
+    EXPECT_EQ(ran(renderer), (Names{Pass::RadianceLeaves, Pass::RadianceMip, Pass::Bounce, Pass::ConeTrace, Pass::Composite}))
+        << "one more bounce: back to one bounce, then gathered again";
+    EXPECT_EQ(renderer.statistics().bouncesGathered, 2u);
+    const ImageF threeBounces = renderer.readHdr();
+
+    s.bounces = 1;
+    renderer.setSettings(s);
+    renderer.renderFrame(moved(camera));
+    EXPECT_EQ(ran(renderer), (Names{Pass::RadianceLeaves, Pass::RadianceMip, Pass::ConeTrace, Pass::Composite}))
+        << "back to one bounce";
+    for (const PassRun& p : renderer.lastFrame())
+        if (p.pass == Pass::Bounce) EXPECT_EQ(p.reason, "not needed: one bounce");
+
+    // The same state rendered from scratch: the same image, whatever came before.
+    Scene turnedScene = scene_;
+    turnedScene.lights = turned(scene_.lights);
+    for (int bounces : {1, 3}) {
+        s.bounces = bounces;
+        renderer.setSettings(s);
+        renderer.renderFrame(moved(camera));
+        Renderer fresh(turnedScene, s);
+        fresh.renderFrame(moved(camera));
+        EXPECT_TRUE(fresh.readHdr().rgba == renderer.readHdr().rgba) << bounces << " bounces";
+    }
+    EXPECT_TRUE(renderer.readHdr().rgba == threeBounces.rgba) << "3 bounces again, as before";
+}
+
 TEST_F(PassGraphTest, IncrementalFramesAreBitIdenticalToFreshOnes) {
     const Camera camera = scene_.cameras[0];
     Renderer incremental(scene_, smallSettings());

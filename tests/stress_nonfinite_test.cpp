@@ -157,6 +157,7 @@ TEST(StressNonFinite, LightAndCameraValuesOnTheCommandLineAreRefused) {
         {"--spot-angles nan,20", "cone angles"},     {"--spot-angles 10,inf", "cone angles"},
         {"--spot-angles 0,1e-300", "outer cone angle"},
         {"--samples 0", "--samples"},                {"--samples 100000", "--samples"},
+        {"--bounces 0", "--bounces"},                {"--bounces 9", "--bounces"},
         {"--point-intensity nan", "intensity"},      {"--point-intensity 1e300", "outside the supported range"},
         {"--point-pos 0,nan,0", "position"},         {"--point-pos 1e19,0,0", "beyond"},
         {"--sun-irradiance 2 --light-color 1,nan,1", "colour"},

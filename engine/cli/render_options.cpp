@@ -20,6 +20,9 @@ void addRenderSettingsOptions(CLI::App& command, RenderSettingsOptions& o) {
         ->capture_default_str();
     command.add_option("--gi", o.gi, "indirect light by cone tracing: on or off")->capture_default_str();
     command.add_flag("--no-photons", o.noPhotons, "inject no light (cones then see only emission; AO stays)");
+    command.add_option("--bounces", o.bounces,
+                       "light bounces of the indirect light, 1..8: each further one gathers cones at every voxel")
+        ->capture_default_str();
     command.add_option("--cones", o.cones.cones, "diffuse cone set: 1, 5, 6, 9 or 16 cones")->capture_default_str();
     command.add_option("--cone-aperture", o.cones.apertureScale, "factor on the derived cone apertures (tan)")
         ->capture_default_str();
@@ -54,6 +57,7 @@ RenderSettings renderSettingsFromOptions(const RenderSettingsOptions& o, const S
     if (o.gi != "on" && o.gi != "off") fail("--gi must be on or off, not '", o.gi, "'");
     settings.gi = o.gi == "on";
     settings.photons = !o.noPhotons;
+    settings.bounces = o.bounces;
     settings.cones = o.cones;
     validateRenderSettings(settings);
     return settings;

@@ -24,6 +24,7 @@ struct RenderSettingsOptions {
     bool noBricks = false;
     std::string gi = "on";
     bool noPhotons = false;
+    int bounces = 1;
     ConeSettings cones;
     float giScale = 1.0f;
 };

@@ -39,6 +39,7 @@
     X(SSBO_MATERIALS, 21)            /* {baseColor, emissive} per material */                     \
     X(SSBO_CONE_COUNTERS, 22)                                                                     \
     X(SSBO_CELL_DIRECTION, 23)                                                                    \
+    X(SSBO_BOUNCE_BASE, 24)          /* bounce_gather: every cell's first-bounce radiance */      \
     X(SSBO_CELL_OPACITY, 25)                                                                      \
     /* Image units (glBindImageTexture). */                                                       \
     X(IMAGE_FRAGMENTS, 0)            /* voxel-fragment list, RGBA32UI */                          \

@@ -16,6 +16,7 @@ const char* inputName(Input input) {
         case Input::ShadowSettings: return "shadow settings";
         case Input::PhotonSettings: return "photon settings";
         case Input::ConeSettings: return "cone settings";
+        case Input::BounceSettings: return "bounce settings";
         case Input::DisplaySettings: return "display settings";
         case Input::ViewSettings: return "view settings";
         case Input::Count: break;
@@ -35,6 +36,7 @@ const char* resourceName(Resource resource) {
         case Resource::CellRadiance: return "cell radiance";
         case Resource::LeafRadiance: return "leaf radiance";
         case Resource::RadianceBricks: return "radiance bricks";
+        case Resource::BouncedRadiance: return "bounced radiance";
         case Resource::GBuffer: return "gbuffer";
         case Resource::DirectRadiance: return "direct radiance";
         case Resource::IndirectIrradiance: return "indirect irradiance";
@@ -67,6 +69,10 @@ const char* unlessLightViews(const RenderSettings& s) {
 const char* unlessRadiance(const RenderSettings& s) {
     if (needsRadiance(s)) return nullptr;
     return s.view == ViewMode::Lit ? "GI off" : "the voxel view shows albedo";
+}
+const char* unlessBounces(const RenderSettings& s) {
+    if (const char* why = unlessRadiance(s)) return why;
+    return s.bounces > 1 ? nullptr : "one bounce";
 }
 const char* unlessLitView(const RenderSettings& s) { return s.view == ViewMode::Lit ? nullptr : "debug view"; }
 const char* unlessConeTrace(const RenderSettings& s) {
@@ -101,6 +107,21 @@ void filterLeafRadiance(FrameResources& f) {
     f.statistics.touchedNodesPerLevel = r.touchedPerLevel;
     f.statistics.photonsMissed = r.photonsMissed;
     f.statistics.nodesPerLevel.assign(octree.levelCount.begin(), octree.levelCount.begin() + octree.levels + 1);
+}
+
+void gatherBounces(FrameResources& f) {
+    if (!f.bounces) f.bounces = std::make_unique<BounceGather>();
+    ConeSettings cones = f.settings.cones;
+    cones.bricks = f.settings.bricks;
+    // The gather starts from one bounce: after an earlier run (other cone settings) the bricks hold
+    // more, and the voxels still hold one, so filtering them again gives it back.
+    if (f.radianceBounces != 1) {
+        f.radianceFilter->leaves(f.svo->octree(), *f.radiance);
+        f.radianceFilter->mip(f.svo->octree(), *f.radiance);
+    }
+    f.bounces->run(f.svo->octree(), *f.radiance, *f.radianceFilter, f.settings.bounces, cones);
+    f.radianceBounces = f.settings.bounces;
+    f.statistics.bouncesGathered = std::uint32_t(f.settings.bounces - 1);
 }
 
 void traceCones(FrameResources& f) {
@@ -174,13 +195,22 @@ const PassTable kFramePasses = {{
      "inject.comp, inject_emissive.comp, radiance_normalize.comp",
      [](FrameResources& f, const FrameView&) { injectPhotons(f); }},
     {Pass::RadianceLeaves, "radiance_leaves", Stage::Radiance,
-     {}, {R::CellValues, R::GeometryBricks, R::CellRadiance}, {R::LeafRadiance}, unlessRadiance,
+     {I::BounceSettings}, {R::CellValues, R::GeometryBricks, R::CellRadiance}, {R::LeafRadiance}, unlessRadiance,
      "radiance_clear.comp, touch_parents.comp, touch_border.comp, radiance_leaves.comp",
      [](FrameResources& f, const FrameView&) { filterLeafRadiance(f); }},
     {Pass::RadianceMip, "radiance_mip", Stage::Radiance,
      {}, {R::LeafRadiance, R::GeometryBricks}, {R::RadianceBricks}, unlessRadiance,
      "radiance_mip.comp",
-     [](FrameResources& f, const FrameView&) { f.radianceFilter->mip(f.svo->octree(), *f.radiance); }},
+     [](FrameResources& f, const FrameView&) {
+         f.radianceFilter->mip(f.svo->octree(), *f.radiance);
+         f.radianceBounces = 1;
+     }},
+    {Pass::Bounce, "bounce", Stage::Radiance,
+     {I::BounceSettings, I::ConeSettings}, {R::RadianceBricks, R::CellValues, R::CellRadiance}, {R::BouncedRadiance},
+     unlessBounces,
+     "bounce_gather.comp, radiance_clear.comp, touch_parents.comp, touch_border.comp, radiance_leaves.comp, "
+     "radiance_mip.comp",
+     [](FrameResources& f, const FrameView&) { gatherBounces(f); }},
     {Pass::GBuffer, "gbuffer", Stage::Camera,
      {I::Geometry, I::Materials, I::Camera, I::OutputSize}, {}, {R::GBuffer}, unlessLitView,
      "scene.vert, gbuffer.frag",
@@ -192,11 +222,12 @@ const PassTable kFramePasses = {{
          f.direct->render(*f.gbuffer, *f.scene, f.lights, f.lightViews.views(), f.settings.pcfRadius);
      }},
     {Pass::ConeTrace, "cone_trace", Stage::Camera,
-     {I::ConeSettings}, {R::GBuffer, R::RadianceBricks}, {R::IndirectIrradiance}, unlessConeTrace,
+     {I::ConeSettings}, {R::GBuffer, R::RadianceBricks, R::BouncedRadiance}, {R::IndirectIrradiance}, unlessConeTrace,
      "cone_trace.comp",
      [](FrameResources& f, const FrameView&) { traceCones(f); }},
     {Pass::VoxelView, "voxel_view", Stage::Camera,
-     {I::Camera, I::OutputSize, I::ViewSettings}, {R::GeometryBricks, R::RadianceBricks}, {R::DebugImage},
+     {I::Camera, I::OutputSize, I::ViewSettings}, {R::GeometryBricks, R::RadianceBricks, R::BouncedRadiance},
+     {R::DebugImage},
      unlessVoxelView,
      "voxel_view.comp",
      renderVoxelView},

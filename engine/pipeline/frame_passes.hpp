@@ -34,6 +34,7 @@ enum class Pass {
     Inject,
     RadianceLeaves,
     RadianceMip,
+    Bounce,
     GBuffer,
     DirectLighting,
     ConeTrace,
@@ -54,6 +55,7 @@ enum class Input {
     ShadowSettings,  // light-view resolution, PCF radius
     PhotonSettings,  // photons on/off
     ConeSettings,    // cone set, aperture, step, offset, lift, bricks on/off
+    BounceSettings,  // the number of bounces
     DisplaySettings, // AOV, exposure, tone curve, GI scale, GI on/off (what composite shows)
     ViewSettings,    // debug view mode, level, bricks
     Count
@@ -74,6 +76,7 @@ enum class Resource {
     CellRadiance,       // per voxel: outgoing radiance and its direction
     LeafRadiance,       // the radiance bricks, filled at the leaves, and which nodes are near light
     RadianceBricks,     // the radiance bricks of every level
+    BouncedRadiance,    // the same bricks with the further bounces added (in place)
     GBuffer,
     DirectRadiance,
     IndirectIrradiance,

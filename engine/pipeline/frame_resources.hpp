@@ -5,6 +5,7 @@
 #include <memory>
 #include <vector>
 
+#include "lighting/bounce_gather.hpp"
 #include "lighting/inject.hpp"
 #include "lighting/radiance_filter.hpp"
 #include "pipeline/frame_passes.hpp"
@@ -28,6 +29,7 @@ struct FrameStatistics {
     std::vector<std::uint32_t> touchedNodesPerLevel;           // radiance filtered through these
     std::vector<std::uint32_t> nodesPerLevel;
     std::uint32_t photonsMissed = 0;
+    std::uint32_t bouncesGathered = 0;                         // further bounces the bounce pass added
     ConeStatistics cones;
 };
 
@@ -43,6 +45,8 @@ struct FrameResources {
     std::unique_ptr<RadianceVolume> radiance;            // CellRadiance, RadiancePartials, RadianceBricks
     std::unique_ptr<PhotonInjection> injection;
     std::unique_ptr<RadianceFilter> radianceFilter;
+    std::unique_ptr<BounceGather> bounces;               // BouncedRadiance
+    int radianceBounces = 1;                             // bounces the radiance bricks hold now
     std::unique_ptr<GBuffer> gbuffer;                    // GBuffer
     std::unique_ptr<DirectLighting> direct;              // DirectRadiance
     std::unique_ptr<ConeTrace> coneTrace;                // IndirectIrradiance

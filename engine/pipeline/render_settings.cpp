@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "core/error.hpp"
+#include "lighting/bounce_gather.hpp"
 #include "gl/gl.hpp"
 #include "voxel/voxel_grid.hpp"
 
@@ -20,6 +21,8 @@ void validateRenderSettings(const RenderSettings& s) {
     if (s.lightViewResolution < 16 || s.lightViewResolution > kMaxImageSide)
         fail("--light-view-res ", s.lightViewResolution, " is out of range; use 16..", kMaxImageSide);
     if (s.pcfRadius < 0 || s.pcfRadius > 8) fail("--pcf-radius ", s.pcfRadius, " is out of range; use 0..8");
+    if (s.bounces < 1 || s.bounces > kMaxBounces)
+        fail("--bounces ", s.bounces, " is out of range; use 1..", kMaxBounces);
     if (s.voxelLevels < kMinVoxelLevels || s.voxelLevels > kMaxVoxelLevels)
         fail("--voxel-levels ", s.voxelLevels, " is out of range; use ", kMinVoxelLevels, "..", kMaxVoxelLevels);
     if (s.voxelViewLevel < 0 || s.voxelViewLevel > s.voxelLevels)

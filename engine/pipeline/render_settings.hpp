@@ -23,6 +23,7 @@ struct RenderSettings {
     ViewMode view = ViewMode::Lit;
     bool gi = true;          // indirect light by cone tracing
     bool photons = true;     // inject light (false: only emission and ambient occlusion)
+    int bounces = 1;         // light bounces the indirect light holds (1..kMaxBounces)
     ConeSettings cones;
     int voxelLevels = 8;     // octree resolution 2^voxelLevels
     int voxelViewLevel = 0;  // level shown by the voxel views; 0 = voxelLevels (the voxels)

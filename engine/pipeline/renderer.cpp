@@ -36,6 +36,7 @@ void Renderer::setSettings(const RenderSettings& s) {
     if (s.voxelLevels != old.voxelLevels) bump(Input::VoxelSettings);
     if (s.lightViewResolution != old.lightViewResolution || s.pcfRadius != old.pcfRadius) bump(Input::ShadowSettings);
     if (s.photons != old.photons) bump(Input::PhotonSettings);
+    if (s.bounces != old.bounces) bump(Input::BounceSettings);
     if (s.cones != old.cones || s.bricks != old.bricks) bump(Input::ConeSettings);
     if (s.display != old.display || s.gi != old.gi) bump(Input::DisplaySettings);
     if (s.view != old.view || s.voxelViewLevel != old.voxelViewLevel || s.bricks != old.bricks)
@@ -134,6 +135,7 @@ std::vector<MemoryPool> Renderer::memory() const {
     if (frame_.radiance)
         pools.push_back({"radiance volume (voxels, lists, six radiance pools)",
                          frame_.radiance->bytes(frame_.svo->octree())});
+    if (frame_.bounces) pools.push_back({"first-bounce radiance (for further bounces)", frame_.bounces->bytes()});
     if (frame_.coneTrace) pools.push_back({"indirect irradiance", frame_.coneTrace->bytes()});
     if (frame_.voxelView) pools.push_back({"voxel view", frame_.voxelView->bytes()});
     return pools;

@@ -80,6 +80,7 @@ void writeTimingsJson(const std::filesystem::path& path, const TimingsReport& re
                           {"touched_nodes_per_level", s.touchedNodesPerLevel},
                           {"nodes_per_level", s.nodesPerLevel},
                           {"photons_missed", s.photonsMissed},
+                          {"bounces_gathered", s.bouncesGathered},
                           {"cone_samples", s.cones.samples},
                           {"cone_samples_saved_by_empty_space_skipping", s.cones.samplesSaved},
                           {"sky_pixels_without_gi_work", s.cones.skyPixels}};

@@ -37,8 +37,8 @@ void validateConeSettings(const ConeSettings& s) {
         fail("cone maximum distance ", s.maxDistance, " must be a finite number ≥ 0 (0: the whole volume)");
 }
 
-void ConeTrace::render(const GBuffer& gbuffer, const Octree& octree, const RadianceVolume& radiance,
-                       const ConeSettings& settings) {
+void setConeMarchUniforms(gl::ComputeCall& call, const Octree& octree, const RadianceVolume& radiance,
+                          const ConeSettings& settings) {
     const std::vector<Cone> cones = makeConeSet(settings.cones);
     std::vector<glm::vec3> directions;
     std::vector<float> tangents, weights;
@@ -48,7 +48,6 @@ void ConeTrace::render(const GBuffer& gbuffer, const Octree& octree, const Radia
         tangents.push_back(std::min(std::tan(c.halfAngle) * settings.apertureScale, 5.0f));
         weights.push_back(c.weight);
     }
-    gl::ComputeCall call(program_);
     const GLuint p = call.program();
     octree.bind(p);
     setBrickPoolUniforms(p, octree);
@@ -57,8 +56,6 @@ void ConeTrace::render(const GBuffer& gbuffer, const Octree& octree, const Radia
     glProgramUniform1fv(p, glGetUniformLocation(p, "uConeTanHalfAngle"), GLsizei(cones.size()), tangents.data());
     glProgramUniform1fv(p, glGetUniformLocation(p, "uConeWeight"), GLsizei(cones.size()), weights.data());
     const float diagonal = float(octree.grid.resolution()) * 1.7320508f;
-    const std::uint32_t zero = 0;
-    glClearNamedBufferData(counters_.id(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
     call.uniform("uConeCount", int(cones.size()))
         .uniform("uConeStep", settings.step)
         .uniform("uConeOffset", settings.offset)
@@ -66,8 +63,16 @@ void ConeTrace::render(const GBuffer& gbuffer, const Octree& octree, const Radia
         .uniform("uMaxDistance", settings.maxDistance > 0.0f ? settings.maxDistance : diagonal)
         .uniform("uUseBricks", settings.bricks ? 1 : 0)
         .uniform("uVoxelOrigin", glm::vec3(octree.grid.localMin))
-        .uniform("uVoxelScale", float(1.0 / octree.grid.voxelSize))
-        .texture(gl::TEXTURE_GBUFFER_NORMAL, gbuffer.normal())
+        .uniform("uVoxelScale", float(1.0 / octree.grid.voxelSize));
+}
+
+void ConeTrace::render(const GBuffer& gbuffer, const Octree& octree, const RadianceVolume& radiance,
+                       const ConeSettings& settings) {
+    gl::ComputeCall call(program_);
+    setConeMarchUniforms(call, octree, radiance, settings);
+    const std::uint32_t zero = 0;
+    glClearNamedBufferData(counters_.id(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
+    call.texture(gl::TEXTURE_GBUFFER_NORMAL, gbuffer.normal())
         .texture(gl::TEXTURE_GBUFFER_POSITION, gbuffer.position())
         .storage(gl::SSBO_CONE_COUNTERS, counters_)
         .image(gl::IMAGE_INDIRECT, indirect_.id(), GL_WRITE_ONLY, GL_RGBA32F)

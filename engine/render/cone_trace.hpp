@@ -1,6 +1,7 @@
 #pragma once
 // cone_trace pass (DESIGN §4 pass 12): indirect irradiance and ambient visibility per pixel by
 // diffuse cones through the radiance bricks.
+#include "gl/compute.hpp"
 #include "gl/objects.hpp"
 #include "lighting/radiance_volume.hpp"
 #include "render/cone_set.hpp"
@@ -23,6 +24,11 @@ struct ConeSettings {
 // Throws naming the option for a setting out of its range (an unknown cone set, aperture,
 // step, offset, lift, maximum distance).
 void validateConeSettings(const ConeSettings& settings);
+
+// The uniforms and textures of shaders/cone_march.glsl on `call`: the octree, the brick layout,
+// the six radiance pools and the cone set with its aperture, step, offsets and reach.
+void setConeMarchUniforms(gl::ComputeCall& call, const Octree& octree, const RadianceVolume& radiance,
+                          const ConeSettings& settings);
 
 struct ConeStatistics {
     std::uint64_t samples = 0;       // brick samples taken

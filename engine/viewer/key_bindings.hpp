@@ -13,6 +13,7 @@ enum class Action {
     ToggleGi,            // G
     ToggleBricks,        // B
     TogglePhotons,       // P
+    NextBounceCount,     // N       bounces 1, 2, … kMaxBounces, then 1 again
     ToggleVoxelView,     // V       lit <-> octree albedo
     ToggleRadianceView,  // Shift+V lit <-> octree radiance
     CoarserLevel,        // [       voxel views: one octree level up

@@ -180,6 +180,7 @@ void settingsSection(ViewerState& state, bool& changed) {
     ImGui::SliderInt("accumulate up to (samples per pixel)", &state.accumulateSamples, 1, 256, "%d",
                      ImGuiSliderFlags_AlwaysClamp);
     changed |= ImGui::Checkbox("GI (G)", &s.gi);
+    changed |= ImGui::SliderInt("bounces (N)", &s.bounces, 1, kMaxBounces, "%d", ImGuiSliderFlags_AlwaysClamp);
     ImGui::SameLine();
     changed |= ImGui::Checkbox("photons (P)", &s.photons);
     ImGui::SameLine();

@@ -178,6 +178,10 @@ private:
             case Action::ToggleGi: s.gi = !s.gi; status(s.gi ? "GI on" : "GI off"); break;
             case Action::ToggleBricks: s.bricks = !s.bricks; status(s.bricks ? "filtered bricks" : "unfiltered (nearest sample, raw node values)"); break;
             case Action::TogglePhotons: s.photons = !s.photons; status(s.photons ? "photons on" : "photons off"); break;
+            case Action::NextBounceCount:
+                s.bounces = s.bounces % kMaxBounces + 1;
+                status(std::to_string(s.bounces) + (s.bounces == 1 ? " bounce" : " bounces"));
+                break;
             case Action::ToggleVoxelView:
                 s.view = s.view == ViewMode::Voxels ? ViewMode::Lit : ViewMode::Voxels;
                 status(s.view == ViewMode::Voxels ? concat("voxel view, level ", shownLevel) : std::string("lit view"));

@@ -1,0 +1,32 @@
+#pragma once
+// bounce pass: light that bounces more than once (`--bounces N`). Each further bounce gathers,
+// for every occupied voxel, the irradiance arriving at its surface by cones through the radiance
+// bricks as they stand (shaders/bounce_gather.comp), sets the voxel's outgoing radiance to its
+// first bounce plus ρ/π of that irradiance, and filters the radiance bricks again
+// (RadianceFilter): after N − 1 of these the bricks hold N bounces. The voxels' own radiance is
+// put back to the first bounce at the end, so that the radiance filter alone (after a change of
+// the bounce count) gives one bounce again.
+#include "gl/objects.hpp"
+#include "lighting/radiance_filter.hpp"
+#include "render/cone_trace.hpp"
+
+namespace vct {
+
+constexpr int kMaxBounces = 8;
+
+class BounceGather {
+public:
+    BounceGather();
+    // Adds bounces 2..`bounces` to the radiance bricks, which must hold the first bounce.
+    // `cones`: the cone set of the gather (the camera's settings, so that every bounce is gathered alike).
+    void run(const Octree& octree, RadianceVolume& volume, RadianceFilter& filter, int bounces,
+             const ConeSettings& cones);
+    std::size_t bytes() const { return baseBytes_; }
+
+private:
+    gl::Program gather_;
+    gl::Buffer base_;  // the first bounce: (L·τ, τ) then (N·τ, τ) of every cell
+    std::size_t baseBytes_ = 0;
+};
+
+}  // namespace vct
