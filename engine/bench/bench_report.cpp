@@ -315,7 +315,9 @@ void writeMarkdown(const std::filesystem::path& path, const std::vector<BenchRow
        << " RMSE, is the floor under every error below. Indirect part: engine final − engine direct AOV, reference "
           "full − reference direct-only (bounces 0). The path-tracer curve uses seed "
        << s.curveSeed << " (independent of the reference's samples), " << s.referenceBounces << " bounce"
-       << (s.referenceBounces == 1 ? "" : "s") << ", " << s.pathTracerThreads << " threads; its time excludes the BVH build.\n\n";
+       << (s.referenceBounces == 1 ? "" : "s") << ", " << s.pathTracerThreads << " threads; its time excludes the BVH build. "
+          "A `bounces` point is measured against a reference with its own number of bounces (same spp and seed, "
+          "cached alike).\n\n";
     md << "Engine timing: one-at-a-time sweep around the default (" << s.defaultSettings
        << "). `frame ms` is the fastest of " << s.repeats
        << " warm full frames (every pass, octree included) as max(GPU span, Σ pass CPU ms), because llvmpipe runs "

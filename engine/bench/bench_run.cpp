@@ -104,7 +104,7 @@ std::vector<BenchRow> runPathTracerCurve(const Scene& scene, const Camera& camer
 }
 
 std::vector<BenchRow> runEnginePoints(const Scene& scene, const Camera& camera, const std::vector<SweepPoint>& points,
-                                      int repeats, const ReferenceImages& reference,
+                                      int repeats, const ReferenceForBounces& reference,
                                       const metrics::DisplaySettings& display, const Progress& progress) {
     if (points.empty() || !points.front().isDefault) fail("the benchmark needs the default point first (engine bug)");
     if (repeats < 1) fail("repeats must be at least 1");
@@ -196,10 +196,10 @@ std::vector<BenchRow> runEnginePoints(const Scene& scene, const Camera& camera, 
         for (float v : direct.rgba) nonFinite += !std::isfinite(v);
         if (nonFinite) fail("point ", point.label, ": the engine image has ", nonFinite, " non-finite values (engine bug)");
         const ImageF indirect = subtractImages(final, direct);
-        row.error = measureErrors(final, direct, indirect, reference, display);
+        const ReferenceImages& truth = reference(point.settings.bounces);
+        row.error = measureErrors(final, direct, indirect, truth, display);
         if (point.isDefault)
-            row.indirectRegions =
-                metrics::regionRatios(indirect, reference.indirect, kIndirectRegionGrid, kIndirectRegionGrid);
+            row.indirectRegions = metrics::regionRatios(indirect, truth.indirect, kIndirectRegionGrid, kIndirectRegionGrid);
         rows.push_back(row);
         if (progress) progress(rows.back(), i, points.size());
     }

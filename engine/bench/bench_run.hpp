@@ -82,10 +82,14 @@ std::vector<BenchRow> runPathTracerCurve(const Scene& scene, const Camera& camer
                                          const ReferenceImages& reference, const metrics::DisplaySettings& display,
                                          int threads, const Progress& progress = {});
 
+// The reference a point's images are measured against: the path-traced image with as many bounces
+// as the point renders (a `bounces` sweep compares each count with its own ground truth).
+using ReferenceForBounces = std::function<const ReferenceImages&(int bounces)>;
+
 // Every point (their settings complete: size and display included) on a GL context current on
 // this thread.
 std::vector<BenchRow> runEnginePoints(const Scene& scene, const Camera& camera, const std::vector<SweepPoint>& points,
-                                      int repeats, const ReferenceImages& reference,
+                                      int repeats, const ReferenceForBounces& reference,
                                       const metrics::DisplaySettings& display, const Progress& progress = {});
 
 }  // namespace vct::bench

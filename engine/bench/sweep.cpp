@@ -6,6 +6,7 @@
 #include <set>
 
 #include "core/error.hpp"
+#include "lighting/bounce_gather.hpp"
 #include "voxel/voxel_grid.hpp"
 
 namespace vct::bench {
@@ -54,7 +55,7 @@ void checkKeys(const Json& object, const std::string& what, const std::set<std::
 const std::vector<std::string>& parameterNames() {
     static const std::vector<std::string> names = {"voxel_levels", "cones",          "cone_aperture", "cone_step",
                                                    "cone_offset",  "cone_lift",      "bricks",        "light_view_res",
-                                                   "pcf_radius",   "gi"};
+                                                   "pcf_radius",   "gi",             "bounces"};
     return names;
 }
 
@@ -82,6 +83,8 @@ void applyParameter(RenderSettings& s, const std::string& name, const Json& v) {
         s.pcfRadius = integer(v, what, 0, 8);
     } else if (name == "gi") {
         s.gi = boolean(v, what);
+    } else if (name == "bounces") {
+        s.bounces = integer(v, what, 1, kMaxBounces);
     } else {
         std::string list;
         for (const auto& p : parameterNames()) list += (list.empty() ? "" : ", ") + p;
@@ -100,6 +103,7 @@ std::string parameterValue(const RenderSettings& s, const std::string& name) {
     if (name == "light_view_res") return std::to_string(s.lightViewResolution);
     if (name == "pcf_radius") return std::to_string(s.pcfRadius);
     if (name == "gi") return s.gi ? "true" : "false";
+    if (name == "bounces") return std::to_string(s.bounces);
     fail("unknown parameter '", name, "'");
 }
 

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <map>
 #include <ctime>
 #include <fstream>
 #include <thread>
@@ -161,8 +162,23 @@ void run(const BenchOptions& o) {
     };
     std::vector<bench::BenchRow> rows =
         bench::runPathTracerCurve(scene, camera, sweep, ref, display, o.threads, report);
+    // A point with another bounce count than the sweep's reference is measured against a reference
+    // with its own count (cached like the first).
+    std::map<int, bench::ReferenceImages> otherBounces;
+    auto referenceFor = [&](int bounces) -> const bench::ReferenceImages& {
+        if (bounces == sweep.referenceBounces) return ref;
+        auto found = otherBounces.find(bounces);
+        if (found == otherBounces.end()) {
+            reference::ReferenceSettings s = refSettings;
+            s.bounces = bounces;
+            found = otherBounces.emplace(bounces, bench::loadOrRenderReference(scene, camera, s, cacheDir,
+                                                                               !o.refreshReference))
+                        .first;
+        }
+        return found->second;
+    };
     std::vector<bench::BenchRow> engineRows =
-        bench::runEnginePoints(scene, camera, points, sweep.repeats, ref, display, report);
+        bench::runEnginePoints(scene, camera, points, sweep.repeats, referenceFor, display, report);
     rows.insert(rows.begin(), engineRows.begin(), engineRows.end());
     bench::markPareto(rows);
 
