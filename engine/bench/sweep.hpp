@@ -18,7 +18,8 @@
 //     "sweep": {"voxel_levels": [6, 7], "cones": [1, 9], ...}
 //   }
 // Parameters (in "default" and "sweep"): voxel_levels, cones, cone_aperture, cone_step,
-// cone_offset, cone_lift, bricks, light_view_res, pcf_radius, gi.
+// cone_offset, cone_lift, bricks, light_view_res, pcf_radius, gi, bounces (each bounces point is measured
+// against a reference with as many bounces).
 #include <cstdint>
 #include <filesystem>
 #include <optional>
