@@ -77,7 +77,8 @@ void run(const RenderOptions& o) {
     // Before any GPU allocation: with a memory budget, a frame that would not fit fails here.
     if (o.memoryBudgetMiB) setMemoryBudgetMiB(*o.memoryBudgetMiB);
     checkMemoryBudget(scene, MemoryRequest{settings.width, settings.height, settings.lightViewResolution,
-                                           settings.voxelLevels, needsOctree(settings), needsRadiance(settings)});
+                                           settings.voxelLevels, needsOctree(settings), needsRadiance(settings),
+                                           settings.bounces > 1});
 
     auto context = gl::createContext(backend);
     Renderer renderer(scene, settings);

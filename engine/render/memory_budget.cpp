@@ -34,7 +34,7 @@ double estimateCells(const Scene& scene, const VoxelGrid& grid) {
     return 1.3 * projected / (grid.voxelSize * grid.voxelSize) + 64.0;
 }
 
-std::size_t estimateVoxelBytes(const Scene& scene, int levels, bool radiance) {
+std::size_t estimateVoxelBytes(const Scene& scene, int levels, bool radiance, bool bounces) {
     const VoxelGrid grid = makeVoxelGrid(scene, levels);
     const double fragments = double(std::min<std::uint64_t>(estimateFragments(scene, grid), 1u << 26));
     const double cells = std::min(estimateCells(scene, grid), std::pow(double(grid.resolution()), 3.0));
@@ -51,6 +51,7 @@ std::size_t estimateVoxelBytes(const Scene& scene, int levels, bool radiance) {
     // Radiance: accumulators, cell radiance and direction, flags; per node flags and lists and the
     // six radiance pools of 27 RGBA32F samples (brick_layout.hpp, "Slabs").
     if (radiance) bytes += cells * (40 + 16 + 16 + 8) + nodes * (8 + 8 + 6 * 27 * 16);
+    if (radiance && bounces) bytes += cells * 32;  // the first bounce's radiance and direction (bounce_gather)
     return std::size_t(bytes * 1.1);  // brick pools are rounded up to whole rows and slabs
 }
 
@@ -65,7 +66,7 @@ MemoryEstimate estimate(const Scene& scene, const MemoryRequest& r) {
                       std::max<std::size_t>(maps, 1);
     e.sceneData = scene.vertices.size() * sizeof(Vertex) + scene.indices.size() * 4 + scene.materials.size() * 32;
     for (const Texture& t : scene.textures) e.sceneData += std::size_t(t.width) * std::size_t(t.height) * 4 * 4 / 3;
-    if (r.octree) e.voxels = estimateVoxelBytes(scene, r.voxelLevels, r.radiance);
+    if (r.octree) e.voxels = estimateVoxelBytes(scene, r.voxelLevels, r.radiance, r.bounces);
     return e;
 }
 

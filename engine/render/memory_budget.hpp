@@ -24,6 +24,7 @@ struct MemoryRequest {
     int voxelLevels = 0;
     bool octree = true;    // GI or a voxel view
     bool radiance = true;  // GI or the radiance view
+    bool bounces = false;  // further bounces (`--bounces` > 1): a copy of every voxel's first bounce
 };
 
 struct MemoryEstimate {
