@@ -109,26 +109,30 @@ void filterLeafRadiance(FrameResources& f) {
     f.statistics.nodesPerLevel.assign(octree.levelCount.begin(), octree.levelCount.begin() + octree.levels + 1);
 }
 
+// The cones of the frame: the cone settings with the frame's bricks on/off (one switch for cones
+// and voxel views).
+ConeSettings frameCones(const RenderSettings& s) {
+    ConeSettings cones = s.cones;
+    cones.bricks = s.bricks;
+    return cones;
+}
+
 void gatherBounces(FrameResources& f) {
     if (!f.bounces) f.bounces = std::make_unique<BounceGather>();
-    ConeSettings cones = f.settings.cones;
-    cones.bricks = f.settings.bricks;
     // The gather starts from one bounce: after an earlier run (other cone settings) the bricks hold
     // more, and the voxels still hold one, so filtering them again gives it back.
     if (f.radianceBounces != 1) {
         f.radianceFilter->leaves(f.svo->octree(), *f.radiance);
         f.radianceFilter->mip(f.svo->octree(), *f.radiance);
     }
-    f.bounces->run(f.svo->octree(), *f.radiance, *f.radianceFilter, f.settings.bounces, cones);
+    f.bounces->run(f.svo->octree(), *f.radiance, *f.radianceFilter, f.settings.bounces, frameCones(f.settings));
     f.radianceBounces = f.settings.bounces;
     f.statistics.bouncesGathered = std::uint32_t(f.settings.bounces - 1);
 }
 
 void traceCones(FrameResources& f) {
     if (!f.coneTrace) f.coneTrace = std::make_unique<ConeTrace>(f.settings.width, f.settings.height);
-    ConeSettings cones = f.settings.cones;
-    cones.bricks = f.settings.bricks;
-    f.coneTrace->render(*f.gbuffer, f.svo->octree(), *f.radiance, cones);
+    f.coneTrace->render(*f.gbuffer, f.svo->octree(), *f.radiance, frameCones(f.settings));
     f.statistics.cones = f.coneTrace->statistics();
 }
 

@@ -99,10 +99,6 @@ GpuScene::GpuScene(const Scene& scene) : vertexArray_(gl::createVertexArray()) {
     for (std::size_t i = 0; i < scene.materials.size(); ++i) {
         materials_.push_back({});
         setMaterial(i, scene.materials[i]);
-        const TextureMapping& mapping = scene.materials[i].baseColorMapping;
-        materials_[i].texCoordSet = mapping.texCoord;
-        materials_[i].uvTransform = mapping.transform;
-        materials_[i].sampler = samplerFor(mapping.wrapS, mapping.wrapT);
     }
     ranges_ = scene.drawRanges;
     for (const DrawRange& range : ranges_) {
@@ -127,6 +123,9 @@ void GpuScene::setMaterial(std::size_t index, const Material& material) {
     m.emissive = material.emissive;
     m.alphaCutoff = material.alphaMode == AlphaMode::Mask ? material.alphaCutoff : -1.0f;
     m.texture = material.baseColorTexture;
+    m.texCoordSet = material.baseColorMapping.texCoord;
+    m.uvTransform = material.baseColorMapping.transform;
+    m.sampler = samplerFor(material.baseColorMapping.wrapS, material.baseColorMapping.wrapT);
     const glm::vec4 values[2] = {glm::vec4(material.baseColor, material.baseAlpha), glm::vec4(material.emissive, 0.0f)};
     glNamedBufferSubData(materialBuffer_.id(), GLintptr(index * sizeof values), sizeof values, values);
 }

@@ -1,7 +1,7 @@
 #pragma once
 // How a material's texture is laid on the surface: which texture-coordinate set it reads, the
 // affine transform applied to that set (glTF KHR_texture_transform) and what happens outside
-// [0, 1] on each axis (glTF sampler wrapS / wrapT). The rasterizer (shaders/material_uv.glsl,
+// [0, 1] on each axis (glTF sampler wrapS / wrapT). The rasterizer (shaders/material_vertex.glsl,
 // GpuScene's sampler objects) and the reference path tracer (reference/texture_sampler.hpp) both
 // evaluate this one description, so that they see the same texture.
 //
