@@ -214,3 +214,14 @@ TEST(DirectLighting, TimingsJsonListsEveryPass) {
     EXPECT_LE(sum, timings["total_gpu_ms"].get<double>() + 1e-3);
     EXPECT_GT(timings["memory_total_bytes"].get<double>(), 64 * 48 * 16);
 }
+
+TEST(DirectLighting, FinishEachPassKeepsEveryPassInsideItsWallTime) {
+    // Without it, llvmpipe rasterizes a raster pass's triangles when a later pass flushes, so that
+    // pass's GPU span can be many times its CPU time; finished passes hold all their own work.
+    const auto timings = renderTimings("--voxel-levels 5 --full-frames --frames 2 --finish-each-pass");
+    EXPECT_EQ(timings["passes"].size(), 14u);
+    for (const auto& pass : timings["passes"]) {
+        const double gpu = pass["gpu_ms"].get<double>(), cpu = pass["cpu_ms"].get<double>();
+        EXPECT_LE(gpu, cpu * 1.05 + 0.5) << pass["name"];
+    }
+}

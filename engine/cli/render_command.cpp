@@ -29,6 +29,7 @@ struct RenderOptions {
     int frames = 1;
     int samples = 1;
     bool fullFrames = false;
+    bool finishEachPass = false;
     std::string lightPath;
     std::string cameraPath;
     RenderSettingsOptions render;  // shared with `vct view`
@@ -82,6 +83,7 @@ void run(const RenderOptions& o) {
 
     auto context = gl::createContext(backend);
     Renderer renderer(scene, settings);
+    renderer.timer().setFinishEachPass(o.finishEachPass);
     const std::vector<Light> startLights = renderer.lights();
     Camera view = camera;
     for (int frame = 0; frame < o.frames; ++frame) {
@@ -152,6 +154,10 @@ Run addRenderCommand(CLI::App& app) {
     command->add_flag("--full-frames", o.fullFrames,
                       "run every pass every frame, as if the geometry changed (benchmarks: with --frames 2 a "
                       "warm full frame is timed); otherwise a frame re-runs only what changed");
+    command->add_flag("--finish-each-pass", o.finishEachPass,
+                      "end every pass with glFinish, so each pass's time in --timings is its whole cost (drivers "
+                      "like llvmpipe otherwise let one pass's work spill into the next one's time); frames get "
+                      "slower");
     command->add_option("--camera-path", o.cameraPath,
                         "orbit: the eye turns around the target, 0.05 rad per frame (only camera-dependent "
                         "passes re-run)");

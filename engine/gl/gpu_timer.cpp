@@ -26,6 +26,7 @@ void GpuTimer::beginPass(const std::string& name) {
 void GpuTimer::endPass() {
     PendingPass& pass = current_->passes.back();
     glQueryCounter(pass.end.id(), GL_TIMESTAMP);
+    if (finishEachPass_) glFinish();
     pass.cpuMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - pass.cpuStart).count();
 }
 

@@ -37,6 +37,12 @@ public:
     // Waits for every submitted frame and returns the newest (for headless runs at exit).
     std::optional<FrameTimings> waitForLatest();
 
+    // With `finish`, every pass ends with glFinish, so a pass's CPU time is its whole cost even
+    // where the driver defers work past the pass's end (llvmpipe rasterizes at the next flush and
+    // runs compute at submission, so without it one pass's work can land in the next one's time).
+    // Frames get slower (no overlap between passes): for measuring passes, not for rendering.
+    void setFinishEachPass(bool finish) { finishEachPass_ = finish; }
+
     // Brackets a pass for the lifetime of the object.
     class Scope {
     public:
@@ -69,6 +75,7 @@ private:
     std::optional<PendingFrame> current_;
     std::vector<Query> freeQueries_;
     std::uint64_t frameCounter_ = 0;
+    bool finishEachPass_ = false;
     static constexpr std::size_t kMaxPendingFrames = 8;  // older results are dropped, not waited on
 };
 

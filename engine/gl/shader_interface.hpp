@@ -14,6 +14,7 @@
     /* Storage buffers (GL_SHADER_STORAGE_BUFFER). */                                             \
     X(SSBO_FRAGMENT_COUNTER, 0)      /* voxelize: fragments appended */                          \
     X(SSBO_PREFIX_VALUES, 0)         /* prefix_sum: values scanned in place */                    \
+    X(SSBO_CALIBRATION_DATA, 0)      /* perf_calibration: scattered reads and atomics */          \
     X(SSBO_PREFIX_BLOCK_SUMS, 1)     /* prefix_sum: per-block totals */                           \
     X(SSBO_NODE_CHILD, 1)            /* octree.glsl: first child of each node */                  \
     X(SSBO_NODE_MASK, 2)             /* octree.glsl: existing child slots */                      \
