@@ -79,14 +79,14 @@ bool gnuplotInstalled() { return std::system("command -v gnuplot >/dev/null 2>&1
 TEST(Bench, SweepExpandsOneParameterAtATime) {
     const Json j = Json::parse(R"({"scene": "cornell", "width": 32, "height": 24,
         "default": {"voxel_levels": 6, "cones": 5},
-        "sweep": {"voxel_levels": [5, 6, 7], "cones": [1, 16], "bricks": [false], "bounces": [2]}})");
+        "sweep": {"voxel_levels": [5, 6, 7], "cones": [1, 16], "bricks": [false], "bounces": [2], "samples": [1, 8]}})");
     const bench::SweepDefinition sweep = bench::parseSweep(j, "t");
     const auto points = bench::expandSweep(sweep);
     std::vector<std::string> labels;
     for (const auto& p : points) labels.push_back(p.label);
     // voxel_levels 6 is the default: not repeated.
     EXPECT_EQ(labels, (std::vector<std::string>{"default", "voxel_levels=5", "voxel_levels=7", "cones=1", "cones=16",
-                                                "bricks=false", "bounces=2"}));
+                                                "bricks=false", "bounces=2", "samples=8"}));
     EXPECT_TRUE(points[0].isDefault);
     EXPECT_EQ(points[0].settings.voxelLevels, 6);
     EXPECT_EQ(points[2].settings.voxelLevels, 7);
@@ -96,6 +96,8 @@ TEST(Bench, SweepExpandsOneParameterAtATime) {
     EXPECT_FALSE(points[5].settings.bricks);
     EXPECT_EQ(points[6].settings.bounces, 2);
     EXPECT_EQ(points[5].settings.bounces, 1);
+    EXPECT_EQ(points[7].settings.pixelSamples, 8);
+    EXPECT_EQ(points[6].settings.pixelSamples, 1);
     EXPECT_EQ(sweep.curveSeed, sweep.referenceSeed + 1) << "the curve's samples are independent of the reference's";
 }
 
@@ -113,6 +115,7 @@ TEST(Bench, SweepRejectsTyposAndBadValues) {
     EXPECT_NE(message(R"({"sweep": {"cones": [7]}})").find("not a cone set"), std::string::npos);
     EXPECT_NE(message(R"({"sweep": {"voxel_levels": [11]}})").find("out of range"), std::string::npos);
     EXPECT_NE(message(R"({"sweep": {"bounces": [9]}})").find("out of range"), std::string::npos);
+    EXPECT_NE(message(R"({"sweep": {"samples": [0]}})").find("out of range"), std::string::npos);
     EXPECT_NE(message(R"({"default": {"bricks": 1}})").find("true or false"), std::string::npos);
     EXPECT_NE(message(R"({"pathtracer_curve": {"spp": [4, 2]}})").find("must increase"), std::string::npos);
     EXPECT_NE(message(R"({"reference": {"seed": 3}, "pathtracer_curve": {"seed": 3}})").find("must differ"),
@@ -165,9 +168,9 @@ TEST(Bench, QuickRunWritesRowsChartAndUsesTheCache) {
     ASSERT_EQ(first.exitCode, 0) << first.output;
 
     const Csv csv = readCsv(dir / "results" / "bench_quick.csv");
-    ASSERT_EQ(csv.rows.size(), 6u) << "3 engine points and 3 path-tracer spp values";
+    ASSERT_EQ(csv.rows.size(), 7u) << "4 engine points and 3 path-tracer spp values";
     for (const auto& [kind, label] : std::vector<std::pair<std::string, std::string>>{
-             {"engine", "default"}, {"engine", "cones=1"}, {"engine", "gi=false"},
+             {"engine", "default"}, {"engine", "cones=1"}, {"engine", "gi=false"}, {"engine", "samples=4"},
              {"pathtracer", "1 spp"}, {"pathtracer", "4 spp"}, {"pathtracer", "16 spp"}})
         ASSERT_TRUE(csv.find(kind, label)) << kind << " " << label;
     for (const auto& r : csv.rows) {
@@ -194,6 +197,14 @@ TEST(Bench, QuickRunWritesRowsChartAndUsesTheCache) {
     EXPECT_LT(number(def, "rmse"), number(oneCone, "rmse")) << "five cones must beat one";
     EXPECT_LT(number(def, "indirect_rmse"), number(oneCone, "indirect_rmse"));
     EXPECT_NEAR(number(*csv.find("engine", "gi=false"), "indirect_ratio"), 0.0, 1e-12) << "GI off: no indirect light";
+    // Four pixel samples: only the camera's passes re-run, and the averaged pixels are closer to the
+    // path tracer's, which averages each pixel's area.
+    const auto& fourSamples = *csv.find("engine", "samples=4");
+    EXPECT_EQ(fourSamples.at("samples"), "4");
+    EXPECT_EQ(def.at("samples"), "1");
+    EXPECT_EQ(fourSamples.at("update_passes"), "gbuffer;direct_lighting;cone_trace;composite");
+    EXPECT_LT(number(fourSamples, "direct_rmse"), number(def, "direct_rmse"));
+    EXPECT_LT(number(fourSamples, "rmse"), number(def, "rmse"));
     // The path tracer converges: 16 spp beats 1 spp by about √16.
     const double ratio = number(*csv.find("pathtracer", "1 spp"), "rmse") / number(*csv.find("pathtracer", "16 spp"), "rmse");
     EXPECT_GT(ratio, 2.5);

@@ -239,7 +239,7 @@ EqualErrorTime pathTracerTimeAt(const std::vector<BenchRow>& rows, double value,
     return result;
 }
 
-std::string describeSettings(const RenderSettings& s) {
+std::string describeSettings(const PointSettings& s) {
     std::string text;
     for (const auto& p : parameterNames()) text += (text.empty() ? "" : ", ") + p + "=" + parameterValue(s, p);
     return text;
@@ -317,7 +317,8 @@ void writeMarkdown(const std::filesystem::path& path, const std::vector<BenchRow
        << s.curveSeed << " (independent of the reference's samples), " << s.referenceBounces << " bounce"
        << (s.referenceBounces == 1 ? "" : "s") << ", " << s.pathTracerThreads << " threads; its time excludes the BVH build. "
           "A `bounces` point is measured against a reference with its own number of bounces (same spp and seed, "
-          "cached alike).\n\n";
+          "cached alike). A `samples` point's image averages that many pixel samples (the first full, the others "
+          "re-running the camera's passes), and its times are those of all its samples together.\n\n";
     md << "Engine timing: one-at-a-time sweep around the default (" << s.defaultSettings
        << "). `frame ms` is the fastest of " << s.repeats
        << " warm full frames (every pass, octree included) as max(GPU span, Σ pass CPU ms), because llvmpipe runs "

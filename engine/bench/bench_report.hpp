@@ -54,7 +54,7 @@ struct BenchSummary {
 };
 
 // The default point's settings as "name=value, …" over every sweep parameter.
-std::string describeSettings(const RenderSettings& settings);
+std::string describeSettings(const PointSettings& settings);
 
 void writeCsv(const std::filesystem::path& path, const std::vector<BenchRow>& rows);
 void writeMarkdown(const std::filesystem::path& path, const std::vector<BenchRow>& rows, const BenchSummary& summary,

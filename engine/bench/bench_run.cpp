@@ -50,6 +50,39 @@ RenderSettings withAov(RenderSettings s, Aov aov, bool fullFrames) {
     return s;
 }
 
+// One image of `samples` pixel samples: the frame that follows whatever changed (sample 0), then
+// the jittered ones, which re-run only the camera's passes.
+struct SampledImage {
+    double cost = 0.0;              // all samples together
+    std::vector<PassCost> passes;   // each pass's cost summed over the samples
+    std::vector<PassRun> ran;       // every pass, marked ran when any sample ran it
+};
+
+SampledImage renderSamples(Renderer& renderer, const Camera& camera, int samples) {
+    SampledImage image;
+    for (int sample = 0; sample < samples; ++sample) {
+        renderer.renderFrame(camera, sample);
+        const auto t = renderer.timer().waitForLatest();
+        if (!t) fail("the GPU timer returned no frame (engine bug)");
+        if (sample == 0) image.ran = renderer.lastFrame();
+        for (std::size_t i = 0; i < image.ran.size(); ++i) image.ran[i].ran |= renderer.lastFrame()[i].ran;
+        image.cost += frameCost(*t);
+        for (const PassCost& p : passCosts(*t)) {
+            auto same = std::find_if(image.passes.begin(), image.passes.end(),
+                                     [&](const PassCost& q) { return q.name == p.name; });
+            if (same == image.passes.end()) {
+                image.passes.push_back(p);
+            } else {
+                same->gpuMs += p.gpuMs;
+                same->cpuMs += p.cpuMs;
+            }
+        }
+    }
+    if (renderer.samplesInOutput() != samples)
+        fail("the image averages ", renderer.samplesInOutput(), " samples, not ", samples, " (engine bug)");
+    return image;
+}
+
 }  // namespace
 
 ErrorMetrics measureErrors(const ImageF& final, const ImageF& direct, const ImageF& indirect,
@@ -139,28 +172,25 @@ std::vector<BenchRow> runEnginePoints(const Scene& scene, const Camera& camera, 
         row.settings = point.settings;
 
         // 1. The update frame and the image.
+        const int samples = point.settings.pixelSamples;
         renderer.setSettings(withAov(point.settings, Aov::Final, false));
-        renderer.renderFrame(camera);
-        if (auto t = renderer.timer().waitForLatest()) row.updateMs = frameCost(*t);
-        row.updatePasses = ranPasses(renderer.lastFrame());
+        const SampledImage update = renderSamples(renderer, camera, samples);
+        row.updateMs = update.cost;
+        row.updatePasses = ranPasses(update.ran);
         const ImageF final = renderer.readHdr();
-        // 2. The direct part.
+        // 2. The direct part (its samples again: the output averages what composite showed).
         renderer.setSettings(withAov(point.settings, Aov::Direct, false));
-        renderer.renderFrame(camera);
+        renderSamples(renderer, camera, samples);
         const ImageF direct = renderer.readHdr();
-        renderer.timer().waitForLatest();
         // 3. Warm full frames.
         renderer.setSettings(withAov(point.settings, Aov::Final, true));
         double best = -1.0;
         for (int r = 0; r < repeats; ++r) {
-            renderer.renderFrame(camera);
-            const auto t = renderer.timer().waitForLatest();
-            if (!t) fail("the GPU timer returned no frame (engine bug)");
-            const double cost = frameCost(*t);
-            row.frameSamplesMs.push_back(cost);
-            if (best < 0.0 || cost < best) {
-                best = cost;
-                row.passes = passCosts(*t);
+            const SampledImage full = renderSamples(renderer, camera, samples);
+            row.frameSamplesMs.push_back(full.cost);
+            if (best < 0.0 || full.cost < best) {
+                best = full.cost;
+                row.passes = full.passes;
             }
         }
         row.frameMs = best;
@@ -176,12 +206,9 @@ std::vector<BenchRow> runEnginePoints(const Scene& scene, const Camera& camera, 
         for (int r = 0; r < repeats; ++r) {
             const bool nudged = r % 2 == 0;
             renderer.setLights(nudged ? nudgedLights : lights);
-            renderer.renderFrame(nudged ? nudgedCamera : camera);
-            const auto t = renderer.timer().waitForLatest();
-            if (!t) fail("the GPU timer returned no frame (engine bug)");
-            const double cost = frameCost(*t);
-            if (r == 0 || cost < row.frameStaticMs) row.frameStaticMs = cost;
-            for (const PassRun& p : renderer.lastFrame())
+            const SampledImage moved = renderSamples(renderer, nudged ? nudgedCamera : camera, samples);
+            if (r == 0 || moved.cost < row.frameStaticMs) row.frameStaticMs = moved.cost;
+            for (const PassRun& p : moved.ran)
                 if (p.ran && declaration(p.pass).stage == Stage::Octree)
                     fail("bench: the static-geometry frame ran ", p.name, " (pass-graph bug?)");
         }

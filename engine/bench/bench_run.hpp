@@ -52,7 +52,7 @@ struct BenchRow {
     std::string kind;  // "engine" or "pathtracer"
     std::string label, parameter, value;
     bool isDefault = false;
-    RenderSettings settings;   // engine rows
+    PointSettings settings;    // engine rows
     int spp = 0;               // path-tracer rows
     double frameMs = 0.0;      // engine: fastest warm full frame; path tracer: fastest render (BVH excluded)
     double frameStaticMs = 0.0;  // engine: fastest static-geometry frame; path tracer: = frameMs

@@ -7,6 +7,7 @@
 
 #include "core/error.hpp"
 #include "lighting/bounce_gather.hpp"
+#include "render/pixel_samples.hpp"
 #include "voxel/voxel_grid.hpp"
 
 namespace vct::bench {
@@ -55,11 +56,11 @@ void checkKeys(const Json& object, const std::string& what, const std::set<std::
 const std::vector<std::string>& parameterNames() {
     static const std::vector<std::string> names = {"voxel_levels", "cones",          "cone_aperture", "cone_step",
                                                    "cone_offset",  "cone_lift",      "bricks",        "light_view_res",
-                                                   "pcf_radius",   "gi",             "bounces"};
+                                                   "pcf_radius",   "gi",             "bounces",       "samples"};
     return names;
 }
 
-void applyParameter(RenderSettings& s, const std::string& name, const Json& v) {
+void applyParameter(PointSettings& s, const std::string& name, const Json& v) {
     const std::string what = "'" + name + "'";
     if (name == "voxel_levels") {
         s.voxelLevels = integer(v, what, kMinVoxelLevels, kMaxVoxelLevels);
@@ -85,6 +86,8 @@ void applyParameter(RenderSettings& s, const std::string& name, const Json& v) {
         s.gi = boolean(v, what);
     } else if (name == "bounces") {
         s.bounces = integer(v, what, 1, kMaxBounces);
+    } else if (name == "samples") {
+        s.pixelSamples = integer(v, what, 1, kMaxPixelSamples);
     } else {
         std::string list;
         for (const auto& p : parameterNames()) list += (list.empty() ? "" : ", ") + p;
@@ -92,7 +95,7 @@ void applyParameter(RenderSettings& s, const std::string& name, const Json& v) {
     }
 }
 
-std::string parameterValue(const RenderSettings& s, const std::string& name) {
+std::string parameterValue(const PointSettings& s, const std::string& name) {
     if (name == "voxel_levels") return std::to_string(s.voxelLevels);
     if (name == "cones") return std::to_string(s.cones.cones);
     if (name == "cone_aperture") return formatNumber(s.cones.apertureScale);
@@ -104,6 +107,7 @@ std::string parameterValue(const RenderSettings& s, const std::string& name) {
     if (name == "pcf_radius") return std::to_string(s.pcfRadius);
     if (name == "gi") return s.gi ? "true" : "false";
     if (name == "bounces") return std::to_string(s.bounces);
+    if (name == "samples") return std::to_string(s.pixelSamples);
     fail("unknown parameter '", name, "'");
 }
 
@@ -172,7 +176,7 @@ SweepDefinition parseSweep(const Json& j, const std::string& name, const std::fi
             if (!w.is_object()) fail("'sweep' must be an object: parameter → list of values");
             for (const auto& [key, values] : w.items()) {
                 if (!values.is_array()) fail("'sweep.", key, "' must be a list of values");
-                RenderSettings probe = s.defaults;
+                PointSettings probe = s.defaults;
                 std::vector<Json> list;
                 for (const auto& v : values) {
                     applyParameter(probe, key, v);  // checks name, type and range

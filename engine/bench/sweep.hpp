@@ -19,7 +19,8 @@
 //   }
 // Parameters (in "default" and "sweep"): voxel_levels, cones, cone_aperture, cone_step,
 // cone_offset, cone_lift, bricks, light_view_res, pcf_radius, gi, bounces (each bounces point is measured
-// against a reference with as many bounces).
+// against a reference with as many bounces), samples (pixel samples each image averages, as
+// `vct render --samples`; the point's times are those of all its samples together).
 #include <cstdint>
 #include <filesystem>
 #include <optional>
@@ -36,11 +37,18 @@ namespace vct::bench {
 // The parameters a sweep may vary, in the order the CSV lists them.
 const std::vector<std::string>& parameterNames();
 
+// What an engine point renders: the renderer's settings, and how many pixel samples its image
+// averages. Samples are not a renderer setting but a number of frames (Renderer::renderFrame's
+// `sample`), so they sit beside the settings rather than in them.
+struct PointSettings : RenderSettings {
+    int pixelSamples = 1;
+};
+
 struct SweepPoint {
     std::string label;      // "default", "cones=16", …
     std::string parameter;  // empty for the default point
     std::string value;      // the parameter's value as written in the CSV
-    RenderSettings settings;
+    PointSettings settings;
     bool isDefault = false;
 };
 
@@ -58,7 +66,7 @@ struct SweepDefinition {
     std::uint64_t referenceSeed = 1;
     std::vector<int> curveSpp{1, 2, 4, 8, 16, 32, 64};
     std::uint64_t curveSeed = 2;
-    RenderSettings defaults;  // width/height/display filled in by the runner
+    PointSettings defaults;  // width/height/display filled in by the runner
     std::vector<std::pair<std::string, std::vector<nlohmann::ordered_json>>> sweep;  // in file order
 };
 
@@ -72,9 +80,9 @@ SweepDefinition parseSweep(const nlohmann::ordered_json& json, const std::string
 std::vector<SweepPoint> expandSweep(const SweepDefinition& sweep);
 
 // Sets one parameter; throws naming it when the value has the wrong type or range.
-void applyParameter(RenderSettings& settings, const std::string& name, const nlohmann::ordered_json& value);
+void applyParameter(PointSettings& settings, const std::string& name, const nlohmann::ordered_json& value);
 // The parameter's value in `settings`, formatted as in the CSV ("0.75", "true", "7").
-std::string parameterValue(const RenderSettings& settings, const std::string& name);
+std::string parameterValue(const PointSettings& settings, const std::string& name);
 
 // The scene argument resolved against the sweep file's folder (built-in names stay as they are).
 std::string resolveScenePath(const SweepDefinition& sweep);

@@ -153,7 +153,8 @@ Run addRenderCommand(CLI::App& app) {
                         "estimate exceeds it fails before allocating, naming the largest setting that fits");
     command->add_flag("--full-frames", o.fullFrames,
                       "run every pass every frame, as if the geometry changed (benchmarks: with --frames 2 a "
-                      "warm full frame is timed); otherwise a frame re-runs only what changed");
+                      "warm full frame is timed; further --samples re-run only the camera's passes); otherwise a "
+                      "frame re-runs only what changed");
     command->add_flag("--finish-each-pass", o.finishEachPass,
                       "end every pass with glFinish, so each pass's time in --timings is its whole cost (drivers "
                       "like llvmpipe otherwise let one pass's work spill into the next one's time); frames get "

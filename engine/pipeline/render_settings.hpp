@@ -28,7 +28,7 @@ struct RenderSettings {
     int voxelLevels = 8;     // octree resolution 2^voxelLevels
     int voxelViewLevel = 0;  // level shown by the voxel views; 0 = voxelLevels (the voxels)
     bool bricks = true;      // trilinear in the bricks (else nearest sample for cones, raw node values for voxel views)
-    bool fullFrames = false;  // every pass every frame, as if the geometry changed (benchmarks)
+    bool fullFrames = false;  // every pass every image (its sample 0), as if the geometry changed (benchmarks)
 
     bool operator==(const RenderSettings&) const = default;
 };

@@ -81,23 +81,25 @@ void Renderer::renderFrame(const Camera& camera, int sample) {
     if (sample < 0) fail("sample index ", sample, " is negative; samples count from 0 (the pixel centre)");
     const bool othersUnchanged = frame_.versions == versionsAfterLastFrame_ && samplesInOutput_ > 0;
     const bool sameCamera = lastCamera_ == camera;
+    const bool continues = othersUnchanged && sameCamera && sample == lastSample_ + 1;
     if (!sameCamera || sample != lastSample_) {
         bump(Input::Camera);
-        const bool continues = othersUnchanged && sameCamera && sample == lastSample_ + 1;
         samplesInOutput_ = continues ? samplesInOutput_ + 1 : 1;
     } else if (!othersUnchanged) {
         samplesInOutput_ = 1;  // the same sample again, but something else changed: a fresh average
     }
     lastCamera_ = camera;
     lastSample_ = sample;
-    run(camera, {Resource::Output}, pixelSampleOffset(sample));
+    // With fullFrames every image is built from scratch; its further samples re-run only the
+    // camera's passes, as after any other change.
+    run(camera, {Resource::Output}, frame_.settings.fullFrames && !continues, pixelSampleOffset(sample));
     versionsAfterLastFrame_ = frame_.versions;
 }
 
-void Renderer::buildOctree() { run(std::nullopt, {Resource::GeometryBricks}); }
+void Renderer::buildOctree() { run(std::nullopt, {Resource::GeometryBricks}, frame_.settings.fullFrames); }
 
-void Renderer::run(const std::optional<Camera>& camera, ResourceSet targets, glm::dvec2 jitter) {
-    if (frame_.settings.fullFrames) bump(Input::Geometry);
+void Renderer::run(const std::optional<Camera>& camera, ResourceSet targets, bool everyPass, glm::dvec2 jitter) {
+    if (everyPass) bump(Input::Geometry);
     FrameView view;
     if (camera) {
         view.camera = &*camera;
