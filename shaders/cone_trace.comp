@@ -1,35 +1,58 @@
 #version 450
 layout(local_size_x = 8, local_size_y = 8) in;
-// cone_trace (DESIGN §4 pass 12, §5.5): per pixel, diffuse cones over the hemisphere around the
-// normal march through the radiance bricks (cone_march.glsl) and add up to the indirect
-// irradiance E. Output: E (rgb) and ambient visibility (a: 1 = nothing in the way).
+// cone_trace (DESIGN §4 pass 12, §5.5): diffuse cones over the hemisphere around the normal march
+// through the radiance bricks (cone_march.glsl) and add up to the indirect irradiance E.
+// Output: E (rgb) and ambient visibility (a: 1 = nothing in the way).
+//
+// With uDownscale = 1 every pixel is traced, straight into the indirect image. With 2, one pixel
+// of each 2×2 block is traced into a quarter-size image, with the pixel it traced (or kNoPixel when
+// the whole block is sky); cone_upsample.comp then gives every pixel its irradiance from the
+// traced pixels that share its surface. Which pixel of a block is traced turns with uRotation (the
+// pixel sample), so that accumulated samples trace every pixel in turn.
 #include "cone_march.glsl"
+#include "cone_trace_common.glsl"
 
 layout(binding = TEXTURE_GBUFFER_NORMAL) uniform sampler2D uNormal;
 layout(binding = TEXTURE_GBUFFER_POSITION) uniform sampler2D uPosition;
 layout(rgba32f, binding = IMAGE_INDIRECT) uniform writeonly image2D uIndirect;
-// What the pass did and saved, as 64-bit counts (low, high): samples taken, samples that empty-
-// space skipping saved (the steps the skipped nodes would have cost), pixels that saw the sky.
-layout(std430, binding = SSBO_CONE_COUNTERS) buffer Counters { uint counters[6]; };
-void count64(uint index, uint value) {
-    if (value == 0u) return;
-    uint old = atomicAdd(counters[index], value);
-    if (old + value < old) atomicAdd(counters[index + 1u], 1u);
-}
+layout(r32ui, binding = IMAGE_TRACED_PIXEL) uniform writeonly uimage2D uTracedPixel;
+
+uniform int uDownscale;
+uniform int uRotation;
+
+const ivec2 kBlockOrder[4] = ivec2[](ivec2(0, 0), ivec2(1, 1), ivec2(1, 0), ivec2(0, 1));
 
 void main() {
-    ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
-    if (any(greaterThanEqual(pixel, imageSize(uIndirect)))) return;
+    const ivec2 cell = ivec2(gl_GlobalInvocationID.xy);
+    if (any(greaterThanEqual(cell, imageSize(uIndirect)))) return;
+    const ivec2 imageSize = textureSize(uPosition, 0);
+    // The pixel this invocation traces: itself, or the first pixel of its block, in the turning
+    // order, that sees a surface.
+    ivec2 pixel = cell;
     vec4 position = texelFetch(uPosition, pixel, 0);
+    if (uDownscale > 1) {
+        position.w = 0.0;
+        for (int k = 0; k < 4 && position.w <= 0.0; ++k) {
+            const ivec2 candidate = cell * 2 + kBlockOrder[(k + uRotation) & 3];
+            if (any(greaterThanEqual(candidate, imageSize))) continue;
+            pixel = candidate;
+            position = texelFetch(uPosition, pixel, 0);
+        }
+    }
     if (position.w <= 0.0) {  // sky: no GI work
-        imageStore(uIndirect, pixel, vec4(0.0, 0.0, 0.0, 1.0));
-        count64(4u, 1u);
+        imageStore(uIndirect, cell, vec4(0.0, 0.0, 0.0, 1.0));
+        if (uDownscale > 1)
+            imageStore(uTracedPixel, cell, uvec4(NO_TRACED_PIXEL));
+        else
+            count64(CONE_COUNTER_SKY_PIXELS, 1u);
         return;
     }
-    vec3 normal = normalize(texelFetch(uNormal, pixel, 0).xyz);
-    vec3 origin = (position.xyz - uVoxelOrigin) * uVoxelScale + normal * uConeOffset;
-    vec4 gathered = gatherIrradiance(origin, normal);
-    imageStore(uIndirect, pixel, vec4(gathered.rgb, 1.0 - gathered.a / PI));
-    count64(0u, samplesTaken);
-    count64(2u, samplesSaved);
+    const vec3 normal = normalize(texelFetch(uNormal, pixel, 0).xyz);
+    const vec3 origin = (position.xyz - uVoxelOrigin) * uVoxelScale + normal * uConeOffset;
+    const vec4 gathered = gatherIrradiance(origin, normal);
+    imageStore(uIndirect, cell, vec4(gathered.rgb, 1.0 - gathered.a / PI));
+    if (uDownscale > 1) imageStore(uTracedPixel, cell, uvec4(uint(pixel.x) | (uint(pixel.y) << 16)));
+    count64(CONE_COUNTER_SAMPLES, samplesTaken);
+    count64(CONE_COUNTER_SAMPLES_SAVED, samplesSaved);
+    count64(CONE_COUNTER_TRACED_PIXELS, 1u);
 }

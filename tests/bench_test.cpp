@@ -79,14 +79,14 @@ bool gnuplotInstalled() { return std::system("command -v gnuplot >/dev/null 2>&1
 TEST(Bench, SweepExpandsOneParameterAtATime) {
     const Json j = Json::parse(R"({"scene": "cornell", "width": 32, "height": 24,
         "default": {"voxel_levels": 6, "cones": 5},
-        "sweep": {"voxel_levels": [5, 6, 7], "cones": [1, 16], "bricks": [false], "bounces": [2], "samples": [1, 8]}})");
+        "sweep": {"voxel_levels": [5, 6, 7], "cones": [1, 16], "bricks": [false], "bounces": [2], "samples": [1, 8], "gi_resolution": ["full"]}})");
     const bench::SweepDefinition sweep = bench::parseSweep(j, "t");
     const auto points = bench::expandSweep(sweep);
     std::vector<std::string> labels;
     for (const auto& p : points) labels.push_back(p.label);
     // voxel_levels 6 is the default: not repeated.
     EXPECT_EQ(labels, (std::vector<std::string>{"default", "voxel_levels=5", "voxel_levels=7", "cones=1", "cones=16",
-                                                "bricks=false", "bounces=2", "samples=8"}));
+                                                "bricks=false", "bounces=2", "samples=8", "gi_resolution=full"}));
     EXPECT_TRUE(points[0].isDefault);
     EXPECT_EQ(points[0].settings.voxelLevels, 6);
     EXPECT_EQ(points[2].settings.voxelLevels, 7);
@@ -98,6 +98,8 @@ TEST(Bench, SweepExpandsOneParameterAtATime) {
     EXPECT_EQ(points[5].settings.bounces, 1);
     EXPECT_EQ(points[7].settings.pixelSamples, 8);
     EXPECT_EQ(points[6].settings.pixelSamples, 1);
+    EXPECT_EQ(points[8].settings.giResolution, GiResolution::Full);
+    EXPECT_EQ(points[0].settings.giResolution, GiResolution::Half) << "the engine's default";
     EXPECT_EQ(sweep.curveSeed, sweep.referenceSeed + 1) << "the curve's samples are independent of the reference's";
 }
 
@@ -116,6 +118,7 @@ TEST(Bench, SweepRejectsTyposAndBadValues) {
     EXPECT_NE(message(R"({"sweep": {"voxel_levels": [11]}})").find("out of range"), std::string::npos);
     EXPECT_NE(message(R"({"sweep": {"bounces": [9]}})").find("out of range"), std::string::npos);
     EXPECT_NE(message(R"({"sweep": {"samples": [0]}})").find("out of range"), std::string::npos);
+    EXPECT_NE(message(R"({"sweep": {"gi_resolution": ["third"]}})").find("\"full\" or \"half\""), std::string::npos);
     EXPECT_NE(message(R"({"default": {"bricks": 1}})").find("true or false"), std::string::npos);
     EXPECT_NE(message(R"({"pathtracer_curve": {"spp": [4, 2]}})").find("must increase"), std::string::npos);
     EXPECT_NE(message(R"({"reference": {"seed": 3}, "pathtracer_curve": {"seed": 3}})").find("must differ"),

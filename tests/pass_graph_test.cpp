@@ -92,6 +92,11 @@ TEST_F(PassGraphTest, EachChangeRerunsExactlyItsDependentPasses) {
     renderer.renderFrame(moved(camera));
     EXPECT_EQ(ran(renderer), (Names{Pass::ConeTrace, Pass::Composite})) << "cone settings";
 
+    s.giResolution = GiResolution::Full;
+    renderer.setSettings(s);
+    renderer.renderFrame(moved(camera));
+    EXPECT_EQ(ran(renderer), (Names{Pass::ConeTrace, Pass::Composite})) << "GI resolution";
+
     s.display.exposureEV += 1.0;
     renderer.setSettings(s);
     renderer.renderFrame(moved(camera));
@@ -237,6 +242,15 @@ TEST_F(PassGraphTest, BouncesFollowTheLightsAndTheirCountNeverTheCamera) {
         << "one more bounce: back to one bounce, then gathered again";
     EXPECT_EQ(renderer.statistics().bouncesGathered, 2u);
     const ImageF threeBounces = renderer.readHdr();
+
+    s.giResolution = GiResolution::Full;
+    renderer.setSettings(s);
+    renderer.renderFrame(moved(camera));
+    EXPECT_EQ(ran(renderer), (Names{Pass::ConeTrace, Pass::Composite})) << "cones at every pixel: no bounce again";
+    s.giResolution = GiResolution::Half;
+    renderer.setSettings(s);
+    renderer.renderFrame(moved(camera));
+    EXPECT_TRUE(renderer.readHdr().rgba == threeBounces.rgba) << "back to half resolution, as before";
 
     s.bounces = 1;
     renderer.setSettings(s);

@@ -56,7 +56,8 @@ void checkKeys(const Json& object, const std::string& what, const std::set<std::
 const std::vector<std::string>& parameterNames() {
     static const std::vector<std::string> names = {"voxel_levels", "cones",          "cone_aperture", "cone_step",
                                                    "cone_offset",  "cone_lift",      "bricks",        "light_view_res",
-                                                   "pcf_radius",   "gi",             "bounces",       "samples"};
+                                                   "pcf_radius",   "gi",             "bounces",       "samples",
+                                                   "gi_resolution"};
     return names;
 }
 
@@ -88,6 +89,13 @@ void applyParameter(PointSettings& s, const std::string& name, const Json& v) {
         s.bounces = integer(v, what, 1, kMaxBounces);
     } else if (name == "samples") {
         s.pixelSamples = integer(v, what, 1, kMaxPixelSamples);
+    } else if (name == "gi_resolution") {
+        if (!v.is_string()) fail(what, " must be \"full\" or \"half\"");
+        try {
+            s.giResolution = parseGiResolution(v.get<std::string>());
+        } catch (const Error&) {
+            fail(what, " must be \"full\" or \"half\", not \"", v.get<std::string>(), "\"");
+        }
     } else {
         std::string list;
         for (const auto& p : parameterNames()) list += (list.empty() ? "" : ", ") + p;
@@ -108,6 +116,7 @@ std::string parameterValue(const PointSettings& s, const std::string& name) {
     if (name == "gi") return s.gi ? "true" : "false";
     if (name == "bounces") return std::to_string(s.bounces);
     if (name == "samples") return std::to_string(s.pixelSamples);
+    if (name == "gi_resolution") return giResolutionName(s.giResolution);
     fail("unknown parameter '", name, "'");
 }
 

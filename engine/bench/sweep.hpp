@@ -20,7 +20,8 @@
 // Parameters (in "default" and "sweep"): voxel_levels, cones, cone_aperture, cone_step,
 // cone_offset, cone_lift, bricks, light_view_res, pcf_radius, gi, bounces (each bounces point is measured
 // against a reference with as many bounces), samples (pixel samples each image averages, as
-// `vct render --samples`; the point's times are those of all its samples together).
+// `vct render --samples`; the point's times are those of all its samples together),
+// gi_resolution ("full" or "half", `--gi-resolution`).
 #include <cstdint>
 #include <filesystem>
 #include <optional>

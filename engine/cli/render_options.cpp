@@ -33,6 +33,11 @@ void addRenderSettingsOptions(CLI::App& command, RenderSettingsOptions& o) {
     command.add_option("--cone-lift", o.cones.lift,
                        "extra offset along the normal per unit of cone diameter (against self-illumination)")
         ->capture_default_str();
+    command.add_option("--gi-resolution", o.giResolution,
+                       "half: cones at one pixel of each 2x2 block, the others take the irradiance of traced "
+                       "pixels on their own surface (about 4x fewer cones, as close to the path tracer); full: at "
+                       "every pixel")
+        ->capture_default_str();
     command.add_option("--gi-scale", o.giScale, "artistic factor on indirect light (1 = physically consistent)")
         ->capture_default_str();
     command.add_option("--voxel-levels", o.voxelLevels, "octree resolution 2^L voxels per axis, L in 5..10")
@@ -59,6 +64,7 @@ RenderSettings renderSettingsFromOptions(const RenderSettingsOptions& o, const S
     settings.photons = !o.noPhotons;
     settings.bounces = o.bounces;
     settings.cones = o.cones;
+    settings.giResolution = parseGiResolution(o.giResolution);
     validateRenderSettings(settings);
     return settings;
 }

@@ -26,6 +26,7 @@ struct RenderSettingsOptions {
     bool noPhotons = false;
     int bounces = 1;
     ConeSettings cones;
+    std::string giResolution = "half";
     float giScale = 1.0f;
 };
 

@@ -17,6 +17,7 @@ const char* inputName(Input input) {
         case Input::PhotonSettings: return "photon settings";
         case Input::ConeSettings: return "cone settings";
         case Input::BounceSettings: return "bounce settings";
+        case Input::GiResolution: return "GI resolution";
         case Input::DisplaySettings: return "display settings";
         case Input::ViewSettings: return "view settings";
         case Input::Count: break;
@@ -130,9 +131,10 @@ void gatherBounces(FrameResources& f) {
     f.statistics.bouncesGathered = std::uint32_t(f.settings.bounces - 1);
 }
 
-void traceCones(FrameResources& f) {
+void traceCones(FrameResources& f, const FrameView& v) {
     if (!f.coneTrace) f.coneTrace = std::make_unique<ConeTrace>(f.settings.width, f.settings.height);
-    f.coneTrace->render(*f.gbuffer, f.svo->octree(), *f.radiance, frameCones(f.settings));
+    f.coneTrace->render(*f.gbuffer, f.svo->octree(), *f.radiance, frameCones(f.settings), f.settings.giResolution,
+                        v.sample);
     f.statistics.cones = f.coneTrace->statistics();
 }
 
@@ -226,9 +228,10 @@ const PassTable kFramePasses = {{
          f.direct->render(*f.gbuffer, *f.scene, f.lights, f.lightViews.views(), f.settings.pcfRadius);
      }},
     {Pass::ConeTrace, "cone_trace", Stage::Camera,
-     {I::ConeSettings}, {R::GBuffer, R::RadianceBricks, R::BouncedRadiance}, {R::IndirectIrradiance}, unlessConeTrace,
-     "cone_trace.comp",
-     [](FrameResources& f, const FrameView&) { traceCones(f); }},
+     {I::ConeSettings, I::GiResolution}, {R::GBuffer, R::RadianceBricks, R::BouncedRadiance}, {R::IndirectIrradiance},
+     unlessConeTrace,
+     "cone_trace.comp, cone_upsample.comp",
+     traceCones},
     {Pass::VoxelView, "voxel_view", Stage::Camera,
      {I::Camera, I::OutputSize, I::ViewSettings}, {R::GeometryBricks, R::RadianceBricks, R::BouncedRadiance},
      {R::DebugImage},

@@ -61,6 +61,7 @@ struct FrameResources {
 struct FrameView {
     const Camera* camera = nullptr;
     ViewTransform transform;  // jittered inside the pixel for samples after the first
+    int sample = 0;           // the pixel sample (render/pixel_samples.hpp)
     int samplesInAverage = 1; // the output averages this many samples, this frame's included
 };
 

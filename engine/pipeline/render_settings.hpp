@@ -25,6 +25,7 @@ struct RenderSettings {
     bool photons = true;     // inject light (false: only emission and ambient occlusion)
     int bounces = 1;         // light bounces the indirect light holds (1..kMaxBounces)
     ConeSettings cones;
+    GiResolution giResolution = GiResolution::Half;  // cones at one pixel per 2×2 block, or at every pixel
     int voxelLevels = 8;     // octree resolution 2^voxelLevels
     int voxelViewLevel = 0;  // level shown by the voxel views; 0 = voxelLevels (the voxels)
     bool bricks = true;      // trilinear in the bricks (else nearest sample for cones, raw node values for voxel views)

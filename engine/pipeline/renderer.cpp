@@ -38,6 +38,7 @@ void Renderer::setSettings(const RenderSettings& s) {
     if (s.photons != old.photons) bump(Input::PhotonSettings);
     if (s.bounces != old.bounces) bump(Input::BounceSettings);
     if (s.cones != old.cones || s.bricks != old.bricks) bump(Input::ConeSettings);
+    if (s.giResolution != old.giResolution) bump(Input::GiResolution);
     if (s.display != old.display || s.gi != old.gi) bump(Input::DisplaySettings);
     if (s.view != old.view || s.voxelViewLevel != old.voxelViewLevel || s.bricks != old.bricks)
         bump(Input::ViewSettings);
@@ -92,18 +93,20 @@ void Renderer::renderFrame(const Camera& camera, int sample) {
     lastSample_ = sample;
     // With fullFrames every image is built from scratch; its further samples re-run only the
     // camera's passes, as after any other change.
-    run(camera, {Resource::Output}, frame_.settings.fullFrames && !continues, pixelSampleOffset(sample));
+    run(camera, {Resource::Output}, frame_.settings.fullFrames && !continues, sample);
     versionsAfterLastFrame_ = frame_.versions;
 }
 
 void Renderer::buildOctree() { run(std::nullopt, {Resource::GeometryBricks}, frame_.settings.fullFrames); }
 
-void Renderer::run(const std::optional<Camera>& camera, ResourceSet targets, bool everyPass, glm::dvec2 jitter) {
+void Renderer::run(const std::optional<Camera>& camera, ResourceSet targets, bool everyPass, int sample) {
     if (everyPass) bump(Input::Geometry);
     FrameView view;
     if (camera) {
         view.camera = &*camera;
-        view.transform = cameraView(*camera, *frame_.scene, frame_.settings.width, frame_.settings.height, jitter);
+        view.transform = cameraView(*camera, *frame_.scene, frame_.settings.width, frame_.settings.height,
+                                    pixelSampleOffset(sample));
+        view.sample = sample;
         view.samplesInAverage = samplesInOutput_;
     }
     const std::vector<PassRun> plan = graph_.plan(frame_.versions, frame_.settings, targets);

@@ -60,9 +60,8 @@ public:
     const std::vector<Light>& lights() const { return frame_.lights; }
 
 private:
-    // `everyPass`: as if the geometry changed (RenderSettings::fullFrames).
-    void run(const std::optional<Camera>& camera, ResourceSet targets, bool everyPass,
-             glm::dvec2 jitter = glm::dvec2(0.0));
+    // `everyPass`: as if the geometry changed (RenderSettings::fullFrames); `sample`: the pixel sample.
+    void run(const std::optional<Camera>& camera, ResourceSet targets, bool everyPass, int sample = 0);
     void createSizedTargets();
     void bump(Input input) { ++frame_.versions[std::size_t(input)]; }
 

@@ -83,7 +83,8 @@ void writeTimingsJson(const std::filesystem::path& path, const TimingsReport& re
                           {"bounces_gathered", s.bouncesGathered},
                           {"cone_samples", s.cones.samples},
                           {"cone_samples_saved_by_empty_space_skipping", s.cones.samplesSaved},
-                          {"sky_pixels_without_gi_work", s.cones.skyPixels}};
+                          {"sky_pixels_without_gi_work", s.cones.skyPixels},
+                          {"cone_traced_pixels", s.cones.tracedPixels}};
     if (report.voxels) {
         const VoxelMemoryReport& v = *report.voxels;
         json["voxels"] = {{"levels", int(v.nodesPerLevel.size()) - 1},

@@ -14,14 +14,28 @@ ConeTrace::ConeTrace(int width, int height)
       height_(height),
       indirect_(gl::createTexture2D(GL_RGBA32F, width, height, 1, "indirect irradiance")),
       program_(gl::buildProgram({{GL_COMPUTE_SHADER, "cone_trace.comp"}})),
-      counters_(gl::createBuffer(24, nullptr, GL_DYNAMIC_STORAGE_BIT, "cone counters")) {}
+      counters_(gl::createBuffer(32, nullptr, GL_DYNAMIC_STORAGE_BIT, "cone counters")) {}
 
 ConeStatistics ConeTrace::statistics() const {
-    std::uint32_t c[6] = {};
+    std::uint32_t c[8] = {};
     glGetNamedBufferSubData(counters_.id(), 0, sizeof c, c);
     auto join = [&](int i) { return std::uint64_t(c[i]) | (std::uint64_t(c[i + 1]) << 32); };
-    return {join(0), join(2), join(4)};
+    return {join(0), join(2), join(4), join(6)};
 }
+
+std::size_t ConeTrace::bytes() const {
+    const std::size_t full = std::size_t(width_) * height_ * 16;
+    const std::size_t blocks = std::size_t((width_ + 1) / 2) * ((height_ + 1) / 2);
+    return full + (traced_.id() ? blocks * (16 + 4) : 0);
+}
+
+GiResolution parseGiResolution(const std::string& name) {
+    if (name == "full") return GiResolution::Full;
+    if (name == "half") return GiResolution::Half;
+    fail("unknown --gi-resolution '", name, "'; use full (cones at every pixel) or half (at one pixel of each 2x2 block)");
+}
+
+const char* giResolutionName(GiResolution resolution) { return resolution == GiResolution::Half ? "half" : "full"; }
 
 void validateConeSettings(const ConeSettings& s) {
     makeConeSet(s.cones);  // throws for an unknown set
@@ -67,16 +81,38 @@ void setConeMarchUniforms(gl::ComputeCall& call, const Octree& octree, const Rad
 }
 
 void ConeTrace::render(const GBuffer& gbuffer, const Octree& octree, const RadianceVolume& radiance,
-                       const ConeSettings& settings) {
-    gl::ComputeCall call(program_);
-    setConeMarchUniforms(call, octree, radiance, settings);
+                       const ConeSettings& settings, GiResolution resolution, int rotation) {
+    const bool half = resolution == GiResolution::Half;
+    const int tracedWidth = half ? (width_ + 1) / 2 : width_, tracedHeight = half ? (height_ + 1) / 2 : height_;
+    if (half && !traced_.id()) {
+        traced_ = gl::createTexture2D(GL_RGBA32F, tracedWidth, tracedHeight, 1, "indirect irradiance, traced blocks");
+        tracedPixel_ = gl::createTexture2D(GL_R32UI, tracedWidth, tracedHeight, 1, "traced pixel of each block");
+        upsampleProgram_ = gl::buildProgram({{GL_COMPUTE_SHADER, "cone_upsample.comp"}});
+    }
     const std::uint32_t zero = 0;
     glClearNamedBufferData(counters_.id(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
-    call.texture(gl::TEXTURE_GBUFFER_NORMAL, gbuffer.normal())
+
+    gl::ComputeCall trace(program_);
+    setConeMarchUniforms(trace, octree, radiance, settings);
+    trace.texture(gl::TEXTURE_GBUFFER_NORMAL, gbuffer.normal())
         .texture(gl::TEXTURE_GBUFFER_POSITION, gbuffer.position())
         .storage(gl::SSBO_CONE_COUNTERS, counters_)
-        .image(gl::IMAGE_INDIRECT, indirect_.id(), GL_WRITE_ONLY, GL_RGBA32F)
-        .dispatchImage(width_, height_, GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+        .image(gl::IMAGE_INDIRECT, half ? traced_.id() : indirect_.id(), GL_WRITE_ONLY, GL_RGBA32F)
+        .image(gl::IMAGE_TRACED_PIXEL, half ? tracedPixel_.id() : 0, GL_WRITE_ONLY, GL_R32UI)
+        .uniform("uDownscale", half ? 2 : 1)
+        .uniform("uRotation", rotation & 3)
+        .dispatchImage(tracedWidth, tracedHeight, GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+    if (half) {
+        gl::ComputeCall upsample(upsampleProgram_);
+        setConeMarchUniforms(upsample, octree, radiance, settings);
+        upsample.texture(gl::TEXTURE_GBUFFER_NORMAL, gbuffer.normal())
+            .texture(gl::TEXTURE_GBUFFER_POSITION, gbuffer.position())
+            .texture(gl::TEXTURE_TRACED_IRRADIANCE, traced_.id())
+            .texture(gl::TEXTURE_TRACED_PIXEL, tracedPixel_.id())
+            .storage(gl::SSBO_CONE_COUNTERS, counters_)
+            .image(gl::IMAGE_INDIRECT, indirect_.id(), GL_WRITE_ONLY, GL_RGBA32F)
+            .dispatchImage(width_, height_, GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+    }
     gl::checkErrors("tracing cones");
 }
 

@@ -1,6 +1,8 @@
 #pragma once
 // cone_trace pass (DESIGN §4 pass 12): indirect irradiance and ambient visibility per pixel by
 // diffuse cones through the radiance bricks.
+#include <string>
+
 #include "gl/compute.hpp"
 #include "gl/objects.hpp"
 #include "lighting/radiance_volume.hpp"
@@ -21,6 +23,13 @@ struct ConeSettings {
     bool operator==(const ConeSettings&) const = default;
 };
 
+// How many pixels one trace of the cone set serves: each pixel its own, or one pixel of each 2×2
+// block, the others taking theirs from the traced pixels that share their surface
+// (shaders/cone_upsample.comp; a pixel that shares its surface with none traces its own).
+enum class GiResolution { Full, Half };
+GiResolution parseGiResolution(const std::string& name);  // "full" or "half"; throws naming the option
+const char* giResolutionName(GiResolution resolution);
+
 // Throws naming the option for a setting out of its range (an unknown cone set, aperture,
 // step, offset, lift, maximum distance).
 void validateConeSettings(const ConeSettings& settings);
@@ -34,20 +43,25 @@ struct ConeStatistics {
     std::uint64_t samples = 0;       // brick samples taken
     std::uint64_t samplesSaved = 0;  // samples empty-space skipping made unnecessary
     std::uint64_t skyPixels = 0;     // pixels with no GI work
+    std::uint64_t tracedPixels = 0;  // pixels whose own cones were traced
 };
 
 class ConeTrace {
 public:
     ConeTrace(int width, int height);
-    void render(const GBuffer& gbuffer, const Octree& octree, const RadianceVolume& radiance, const ConeSettings& settings);
+    // `rotation` turns which pixel of each block is traced at half resolution (the pixel sample,
+    // so that accumulated samples trace every pixel in turn).
+    void render(const GBuffer& gbuffer, const Octree& octree, const RadianceVolume& radiance, const ConeSettings& settings,
+                GiResolution resolution, int rotation);
     GLuint indirect() const { return indirect_.id(); }  // RGBA32F: irradiance, visibility
-    ConeStatistics statistics() const;  // of the last render (reads back 24 bytes)
-    std::size_t bytes() const { return std::size_t(width_) * height_ * 16; }
+    ConeStatistics statistics() const;  // of the last render (reads back 32 bytes)
+    std::size_t bytes() const;
 
 private:
     int width_, height_;
     gl::Texture indirect_;
-    gl::Program program_;
+    gl::Texture traced_, tracedPixel_;  // half resolution only, made on first use
+    gl::Program program_, upsampleProgram_;
     gl::Buffer counters_;
 };
 

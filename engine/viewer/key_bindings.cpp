@@ -21,6 +21,7 @@ const Binding kBindings[] = {
     {{GLFW_KEY_B, 0}, Action::ToggleBricks},
     {{GLFW_KEY_P, 0}, Action::TogglePhotons},
     {{GLFW_KEY_N, 0}, Action::NextBounceCount},
+    {{GLFW_KEY_H, 0}, Action::ToggleGiResolution},
     {{GLFW_KEY_V, 0}, Action::ToggleVoxelView},
     {{GLFW_KEY_V, GLFW_MOD_SHIFT}, Action::ToggleRadianceView},
     {{GLFW_KEY_LEFT_BRACKET, 0}, Action::CoarserLevel},
@@ -146,6 +147,7 @@ const std::string& keyHelp() {
         "  B            filtered bricks / raw octree node values\n"
         "  P            photon injection on/off\n"
         "  N            light bounces: 1, 2, ... 8, then 1 (one bounce is the default)\n"
+        "  H            GI resolution: cones at every pixel / at one pixel of each 2x2 block\n"
         "  V            voxel view (octree albedo) on/off;  Shift+V: radiance view\n"
         "  [ ]          voxel views: coarser / finer octree level\n"
         "  1..6         output: final, direct, indirect, ao, albedo, normal\n"
@@ -156,7 +158,7 @@ const std::string& keyHelp() {
 
 const std::string& keyHelpLine() {
     static const std::string line =
-        "WASD/RF move, drag look, wheel speed, Home reset | G gi, B bricks, P photons, N bounces, V voxels, Shift+V radiance, "
+        "WASD/RF move, drag look, wheel speed, Home reset | G gi, B bricks, P photons, N bounces, H GI res, V voxels, Shift+V radiance, "
         "[ ] level | 1-6 final/direct/indirect/ao/albedo/normal | arrows sun | F1 panel, F12 screenshot, Esc quit";
     return line;
 }

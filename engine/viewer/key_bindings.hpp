@@ -14,6 +14,7 @@ enum class Action {
     ToggleBricks,        // B
     TogglePhotons,       // P
     NextBounceCount,     // N       bounces 1, 2, … kMaxBounces, then 1 again
+    ToggleGiResolution,  // H       cones at every pixel <-> at one pixel of each 2×2 block
     ToggleVoxelView,     // V       lit <-> octree albedo
     ToggleRadianceView,  // Shift+V lit <-> octree radiance
     CoarserLevel,        // [       voxel views: one octree level up

@@ -185,6 +185,11 @@ void settingsSection(ViewerState& state, bool& changed) {
     changed |= ImGui::Checkbox("photons (P)", &s.photons);
     ImGui::SameLine();
     changed |= ImGui::Checkbox("bricks (B)", &s.bricks);
+    bool halfResolution = s.giResolution == GiResolution::Half;
+    if (ImGui::Checkbox("GI at half resolution (H)", &halfResolution)) {
+        s.giResolution = halfResolution ? GiResolution::Half : GiResolution::Full;
+        changed = true;
+    }
 
     static const char* const views[] = {"lit", "voxels (V)", "radiance (Shift+V)"};
     int view = int(s.view);

@@ -182,6 +182,10 @@ private:
                 s.bounces = s.bounces % kMaxBounces + 1;
                 status(std::to_string(s.bounces) + (s.bounces == 1 ? " bounce" : " bounces"));
                 break;
+            case Action::ToggleGiResolution:
+                s.giResolution = s.giResolution == GiResolution::Full ? GiResolution::Half : GiResolution::Full;
+                status(s.giResolution == GiResolution::Full ? "GI at every pixel" : "GI at half resolution");
+                break;
             case Action::ToggleVoxelView:
                 s.view = s.view == ViewMode::Voxels ? ViewMode::Lit : ViewMode::Voxels;
                 status(s.view == ViewMode::Voxels ? concat("voxel view, level ", shownLevel) : std::string("lit view"));

@@ -1,0 +1,20 @@
+// Shared by cone_trace.comp and cone_upsample.comp.
+
+// A block of cone_trace at half resolution that sees only sky traced no pixel.
+const uint NO_TRACED_PIXEL = 0xffffffffu;
+
+// What the cone passes did and saved, as 64-bit counts (low word, high word): samples taken,
+// samples that empty-space skipping saved (the steps the skipped nodes would have cost), pixels
+// that saw the sky, pixels whose own cones were traced. Read back by ConeTrace::statistics.
+layout(std430, binding = SSBO_CONE_COUNTERS) buffer ConeCounters { uint coneCounters[8]; };
+
+const uint CONE_COUNTER_SAMPLES = 0u;
+const uint CONE_COUNTER_SAMPLES_SAVED = 2u;
+const uint CONE_COUNTER_SKY_PIXELS = 4u;
+const uint CONE_COUNTER_TRACED_PIXELS = 6u;
+
+void count64(uint index, uint value) {
+    if (value == 0u) return;
+    uint old = atomicAdd(coneCounters[index], value);
+    if (old + value < old) atomicAdd(coneCounters[index + 1u], 1u);
+}

@@ -1,0 +1,82 @@
+// Cones at half resolution (--gi-resolution half, shaders/cone_upsample.comp): about a quarter of
+// the pixels traced, and the indirect light the same as at full resolution where it matters to a
+// viewer (its mean and its regions); accumulated samples trace every pixel in turn, so they close
+// the remaining gap.
+#include <cmath>
+#include <cstdio>
+
+#include "gl/context.hpp"
+#include "metrics/region_ratio.hpp"
+#include "pipeline/renderer.hpp"
+#include "scene/scene_loader.hpp"
+#include "test_util.hpp"
+
+using namespace vct;
+
+namespace {
+
+RenderSettings indirectSettings(GiResolution resolution) {
+    RenderSettings s;
+    s.width = 160;
+    s.height = 120;
+    s.voxelLevels = 7;
+    s.lightViewResolution = 1024;
+    s.display.aov = Aov::Indirect;
+    s.giResolution = resolution;
+    return s;
+}
+
+struct IndirectImage {
+    ImageF image;
+    ConeStatistics cones;
+};
+
+IndirectImage renderIndirect(const Scene& scene, GiResolution resolution, int samples) {
+    Renderer renderer(scene, indirectSettings(resolution));
+    for (int sample = 0; sample < samples; ++sample) renderer.renderFrame(scene.cameras[0], sample);
+    return {renderer.readHdr(), renderer.statistics().cones};
+}
+
+double rmse(const ImageF& a, const ImageF& b) {
+    double sum = 0.0;
+    for (std::size_t i = 0; i < a.rgba.size(); i += 4)
+        for (int c = 0; c < 3; ++c) sum += std::pow(double(a.rgba[i + c]) - b.rgba[i + c], 2.0);
+    return std::sqrt(sum / double(a.rgba.size() / 4 * 3));
+}
+
+}  // namespace
+
+TEST(ConeUpsample, HalfResolutionTracesAQuarterOfThePixelsAndKeepsTheLight) {
+    auto context = gl::createContext(gl::defaultBackend());
+    const Scene scene = makeCornellBox();
+    const IndirectImage full = renderIndirect(scene, GiResolution::Full, 1);
+    const IndirectImage half = renderIndirect(scene, GiResolution::Half, 1);
+
+    const double tracedShare = double(half.cones.tracedPixels) / double(full.cones.tracedPixels);
+    std::printf("[ upsample ] traced pixels %llu of %llu (%.3f); cone samples %.3f of full\n",
+                static_cast<unsigned long long>(half.cones.tracedPixels),
+                static_cast<unsigned long long>(full.cones.tracedPixels), tracedShare,
+                double(half.cones.samples) / double(full.cones.samples));
+    EXPECT_EQ(half.cones.skyPixels, full.cones.skyPixels);
+    EXPECT_GT(tracedShare, 0.25) << "one pixel of every block that sees a surface";
+    EXPECT_LT(tracedShare, 0.30) << "and few pixels that share their surface with no traced pixel";
+
+    const metrics::RegionRatios regions = metrics::regionRatios(half.image, full.image, 3, 3);
+    const double ratio = regions.meanA / regions.meanB;
+    std::printf("[ upsample ] indirect light half/full %.4f, cells %.3f..%.3f\n", ratio,
+                regions.minRatioSignificant.value_or(0.0), regions.maxRatioSignificant.value_or(0.0));
+    EXPECT_NEAR(ratio, 1.0, 0.02);
+    for (const metrics::RegionCell& cell : regions.cells)
+        if (cell.significant && cell.ratio) EXPECT_NEAR(*cell.ratio, 1.0, 0.06) << cell.column << "," << cell.row;
+}
+
+TEST(ConeUpsample, AccumulatedSamplesTraceEveryPixelInTurn) {
+    auto context = gl::createContext(gl::defaultBackend());
+    const Scene scene = makeCornellBox();
+    const double oneSample = rmse(renderIndirect(scene, GiResolution::Half, 1).image,
+                                  renderIndirect(scene, GiResolution::Full, 1).image);
+    const double fourSamples = rmse(renderIndirect(scene, GiResolution::Half, 4).image,
+                                    renderIndirect(scene, GiResolution::Full, 4).image);
+    std::printf("[ upsample ] RMSE half against full: %.4f with 1 sample, %.4f with 4\n", oneSample, fourSamples);
+    EXPECT_LT(fourSamples, 0.8 * oneSample);
+}
