@@ -29,21 +29,6 @@ uniform uint uCapacity;
 uniform int uResolution;
 
 const float kEps = 1e-4;  // voxels; keeps the coverage conservative under float rounding
-const int kMaxPolygon = 9;
-
-// Sutherland–Hodgman against one axis-aligned line: keeps the side where sign·(p[axis] − bound) ≥ 0.
-void clipPolygon(inout vec3 poly[kMaxPolygon], inout int count, int axis, float bound, float sign) {
-    vec3 result[kMaxPolygon];
-    int n = 0;
-    for (int i = 0; i < count; ++i) {
-        vec3 a = poly[i], b = poly[(i + 1) % count];
-        float da = sign * (a[axis] - bound), db = sign * (b[axis] - bound);
-        if (da >= 0.0 && n < kMaxPolygon) result[n++] = a;
-        if ((da >= 0.0) != (db >= 0.0) && n < kMaxPolygon) result[n++] = mix(a, b, da / (da - db));
-    }
-    poly = result;
-    count = n;
-}
 
 uvec3 unproject(uvec3 c, int axis) {
     if (axis == 0) return c.zxy;  // projected (y, z, x)
@@ -51,32 +36,102 @@ uvec3 unproject(uvec3 c, int axis) {
     return c;
 }
 
-void main() {
-    vec2 pixel = floor(gl_FragCoord.xy);
-    vec3 poly[kMaxPolygon];
-    poly[0] = gTri0;
-    poly[1] = gTri1;
-    poly[2] = gTri2;
-    int count = 3;
-    clipPolygon(poly, count, 0, pixel.x - kEps, 1.0);
-    clipPolygon(poly, count, 0, pixel.x + 1.0 + kEps, -1.0);
-    clipPolygon(poly, count, 1, pixel.y - kEps, 1.0);
-    clipPolygon(poly, count, 1, pixel.y + 1.0 + kEps, -1.0);
-    if (count == 0) discard;  // the enlarged primitive covered a pixel the triangle misses
-
-    // Coverage (projected area), polygonCentre and depth range of the clipped polygon.
-    float coverage = 0.0;
-    vec2 polygonCentre = vec2(0.0);
-    float wLow = poly[0].z, wHigh = poly[0].z;
-    for (int i = 0; i < count; ++i) {
-        vec3 a = poly[i], b = poly[(i + 1) % count];
-        coverage += a.x * b.y - b.x * a.y;
-        polygonCentre += a.xy;
-        wLow = min(wLow, a.z);
-        wHigh = max(wHigh, a.z);
+// The part of the segment a + t·(b − a), t in [tLow, tHigh], where s0 + t·(s1 − s0) ≥ 0.
+void clipInterval(float s0, float s1, inout float tLow, inout float tHigh) {
+    if (s1 == s0) {
+        if (s0 < 0.0) tHigh = -1.0;  // wholly outside
+        return;
     }
-    coverage = abs(coverage) * 0.5;
-    polygonCentre /= float(count);
+    const float t = s0 / (s0 - s1);
+    if (s1 > s0)
+        tLow = max(tLow, t);
+    else
+        tHigh = min(tHigh, t);
+}
+
+// The clipped polygon (triangle ∩ pixel square) is never built: its boundary is the parts of the
+// triangle's edges inside the square and the parts of the square's edges inside the triangle, each
+// found as a parameter interval (Liang–Barsky). Green's theorem sums the area over those pieces;
+// their end points are the polygon's vertices, which give its depth range and a point inside it.
+// Fixed loops without arrays indexed at run time: llvmpipe runs them several times faster than
+// Sutherland–Hodgman clipping into a local array.
+struct Boundary {
+    float twiceArea;  // Σ cross(a, b) over the boundary's pieces (counter-clockwise: positive)
+    vec2 endSum;      // Σ (a + b): twice the sum of the polygon's vertices
+    float pieces;
+    float wLow, wHigh;
+    bool touched;     // some piece of boundary lies in the square
+};
+
+void addPiece(inout Boundary boundary, vec3 a, vec3 b) {
+    const float cross2 = a.x * b.y - b.x * a.y;
+    boundary.twiceArea += cross2;
+    boundary.endSum += a.xy + b.xy;
+    boundary.pieces += 1.0;
+    boundary.wLow = min(boundary.wLow, min(a.z, b.z));
+    boundary.wHigh = max(boundary.wHigh, max(a.z, b.z));
+    boundary.touched = true;
+}
+
+void main() {
+    const vec2 pixel = floor(gl_FragCoord.xy);
+    const vec2 lo = pixel - kEps, hi = pixel + 1.0 + kEps;
+    // Counter-clockwise, like the square, so that both kinds of piece add with the same sign.
+    vec3 t0 = gTri0, t1 = gTri1, t2 = gTri2;
+    const float orientation = (t1.x - t0.x) * (t2.y - t0.y) - (t1.y - t0.y) * (t2.x - t0.x);
+    if (orientation < 0.0) {
+        const vec3 swap = t1;
+        t1 = t2;
+        t2 = swap;
+    }
+    const vec3 tri[3] = vec3[3](t0, t1, t2);
+    Boundary boundary = Boundary(0.0, vec2(0.0), 0.0, 1e30, -1e30, false);
+
+    // The triangle's edges, clipped to the square.
+    for (int i = 0; i < 3; ++i) {
+        const vec3 a = tri[i], b = tri[(i + 1) % 3];
+        float tLow = 0.0, tHigh = 1.0;
+        clipInterval(a.x - lo.x, b.x - lo.x, tLow, tHigh);
+        clipInterval(hi.x - a.x, hi.x - b.x, tLow, tHigh);
+        clipInterval(a.y - lo.y, b.y - lo.y, tLow, tHigh);
+        clipInterval(hi.y - a.y, hi.y - b.y, tLow, tHigh);
+        if (tLow <= tHigh) addPiece(boundary, mix(a, b, tLow), mix(a, b, tHigh));
+    }
+    // The square's edges, clipped to the triangle (a degenerate triangle has no inside). Depth
+    // along them comes from the triangle's plane, kept within its vertices' depths (which bound
+    // every point of the triangle) against rounding in needle-thin ones.
+    if (orientation != 0.0) {
+        const vec2 corners[4] = vec2[4](vec2(lo.x, lo.y), vec2(hi.x, lo.y), vec2(hi.x, hi.y), vec2(lo.x, hi.y));
+        const vec2 e1 = t1.xy - t0.xy, e2 = t2.xy - t0.xy;
+        const float invDet = 1.0 / (e1.x * e2.y - e1.y * e2.x);
+        for (int i = 0; i < 4; ++i) {
+            const vec2 a = corners[i], b = corners[(i + 1) % 4];
+            float tLow = 0.0, tHigh = 1.0;
+            for (int k = 0; k < 3; ++k) {
+                const vec2 p = tri[k].xy, q = tri[(k + 1) % 3].xy;
+                const vec2 edge = q - p;
+                clipInterval(edge.x * (a.y - p.y) - edge.y * (a.x - p.x), edge.x * (b.y - p.y) - edge.y * (b.x - p.x),
+                             tLow, tHigh);
+            }
+            if (tLow >= tHigh) continue;  // only a corner touches the triangle: no length, no area
+            vec3 pieceStart = vec3(mix(a, b, tLow), 0.0), pieceEnd = vec3(mix(a, b, tHigh), 0.0);
+            for (int end = 0; end < 2; ++end) {
+                const vec2 r = (end == 0 ? pieceStart.xy : pieceEnd.xy) - t0.xy;
+                const float s = (r.x * e2.y - r.y * e2.x) * invDet, t = (e1.x * r.y - e1.y * r.x) * invDet;
+                const float w = clamp(t0.z + s * (t1.z - t0.z) + t * (t2.z - t0.z), min(min(t0.z, t1.z), t2.z),
+                                      max(max(t0.z, t1.z), t2.z));
+                if (end == 0) pieceStart.z = w; else pieceEnd.z = w;
+            }
+            addPiece(boundary, pieceStart, pieceEnd);
+        }
+    }
+    if (!boundary.touched) discard;  // the enlarged primitive covered a pixel the triangle misses
+
+    // Coverage (projected area), the mean of the clipped polygon's vertices (inside it: it is
+    // convex) and its depth range.
+    const float coverage = max(boundary.twiceArea * 0.5, 0.0);
+    const vec2 polygonCentre = boundary.endSum / (2.0 * boundary.pieces);
+    const float wLow = boundary.wLow, wHigh = boundary.wHigh;
 
     // Attributes at the polygonCentre (inside the triangle) through barycentric coordinates, and the
     // texture footprint of one voxel for mip selection.
