@@ -14,38 +14,42 @@ layout(rgba32f, binding = IMAGE_CHILD_PARTIAL_BRICKS) uniform readonly imageBuff
 layout(std430, binding = SSBO_RAW_VALUE) buffer RawValue { vec4 rawValue[]; };
 
 
+// Per axis, the child-lattice points p = 2Q + d (d = −1, 0, 1, inside [0, 4]) that parent sample
+// Q ∈ {0, 1, 2} gathers: for each, the child slot s along the axis whose closed cube [2s, 2s + 2]
+// holds it, the sample inside that child (p − 2s) and the weight w(d). p = 2 lies in both
+// children: each holds its own partial value there. Entries of Q: kFirst[Q] … kFirst[Q + 1] − 1.
+const int kFirst[4] = int[4](0, 2, 6, 8);
+const int kSlot[8] = int[8](0, 0, 0, 0, 1, 1, 1, 1);
+const int kLocal[8] = int[8](0, 1, 1, 2, 0, 1, 1, 2);
+const float kWeight[8] = float[8](0.5, 0.25, 0.25, 0.5, 0.5, 0.25, 0.25, 0.5);
+
 void main() {
     bool valid;
     uint node = workNode(valid);
     if (!valid) return;
     uint i = node - uLevelStart[uLevel];
-    uint children[8];
+    // Children from the node's mask and first child (octree.glsl childOf), without an array:
+    // indexing a local array at run time spills on llvmpipe.
+    const uint mask = nodeMask[node];
+    const uint firstChild = nodeChild[node];
     vec4 raw = vec4(0.0);
-    for (uint slot = 0u; slot < 8u; ++slot) {
-        children[slot] = childOf(node, slot);
-        if (children[slot] != NONE) raw += rawValue[children[slot]];
-    }
+    for (uint slot = 0u; slot < 8u; ++slot)
+        if ((mask & (1u << slot)) != 0u) raw += rawValue[firstChild + uint(bitCount(mask & ((1u << slot) - 1u)))];
     rawValue[node] = raw / 8.0;
-    uint childLevelStart = uLevelStart[uLevel + 1];
-    const float w[3] = float[3](0.25, 0.5, 0.25);
+    const int firstChildBrick = int(firstChild - uLevelStart[uLevel + 1]);
     for (int k = 0; k < 3; ++k)
         for (int j = 0; j < 3; ++j)
             for (int x = 0; x < 3; ++x) {
                 vec4 sum = vec4(0.0);
-                for (int dz = -1; dz <= 1; ++dz)
-                    for (int dy = -1; dy <= 1; ++dy)
-                        for (int dx = -1; dx <= 1; ++dx) {
-                            ivec3 p = 2 * ivec3(x, j, k) + ivec3(dx, dy, dz);  // child-lattice point
-                            if (any(lessThan(p, ivec3(0))) || any(greaterThan(p, ivec3(4)))) continue;
-                            float weight = w[dx + 1] * w[dy + 1] * w[dz + 1];
-                            for (uint slot = 0u; slot < 8u; ++slot) {
-                                if (children[slot] == NONE) continue;
-                                ivec3 s = ivec3(slot & 1u, (slot >> 1) & 1u, (slot >> 2) & 1u);
-                                ivec3 local = p - 2 * s;
-                                if (any(lessThan(local, ivec3(0))) || any(greaterThan(local, ivec3(2)))) continue;
-                                sum += weight * imageLoad(uChildPartial, int(children[slot] - childLevelStart) * 27 +
-                                                                             sampleIndex(local));
-                            }
+                for (int ez = kFirst[k]; ez < kFirst[k + 1]; ++ez)
+                    for (int ey = kFirst[j]; ey < kFirst[j + 1]; ++ey)
+                        for (int ex = kFirst[x]; ex < kFirst[x + 1]; ++ex) {
+                            const uint slot = uint(kSlot[ex] | (kSlot[ey] << 1) | (kSlot[ez] << 2));
+                            if ((mask & (1u << slot)) == 0u) continue;
+                            const int child = firstChildBrick + bitCount(mask & ((1u << slot) - 1u));
+                            const ivec3 local = ivec3(kLocal[ex], kLocal[ey], kLocal[ez]);
+                            sum += kWeight[ex] * kWeight[ey] * kWeight[ez] *
+                                   imageLoad(uChildPartial, child * 27 + sampleIndex(local));
                         }
                 imageStore(uPartial, int(i) * 27 + sampleIndex(ivec3(x, j, k)), sum);
             }
