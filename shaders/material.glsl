@@ -8,6 +8,7 @@ uniform int uHasTexture;
 uniform int uMaterialIndex; // into the materials buffer (GpuScene)
 uniform int uVertexColors;  // 0: every vertex of the draw is white; the interpolated colour is
                             // then not used (interpolating 1 is not always exactly 1)
+uniform float uTextureLodBias;  // ≤ 0: sharper texture lookups for the later of several pixel samples
 
 vec3 materialVertexColor(vec3 interpolated) { return uVertexColors != 0 ? interpolated : vec3(1.0); }
 
@@ -16,7 +17,7 @@ vec3 materialVertexColor(vec3 interpolated) { return uVertexColors != 0 ? interp
 // that an alpha mask cuts away.
 vec4 materialBaseColor(vec2 uv, vec3 vertexColor) {
     vec4 color = uBaseColor * vec4(materialVertexColor(vertexColor), 1.0);
-    if (uHasTexture != 0) color *= texture(uBaseColorTexture, uv);  // sRGB texture: already linear
+    if (uHasTexture != 0) color *= texture(uBaseColorTexture, uv, uTextureLodBias);  // sRGB: already linear
     if (uAlphaCutoff >= 0.0 && color.a < uAlphaCutoff) discard;
     return color;
 }

@@ -117,6 +117,62 @@ TEST(DirectLighting, PointLightOnPlaneMatchesInverseSquareAcrossItsCubeFaces) {
     EXPECT_GE(beyondSeam, 8);  // the row does reach the side faces
 }
 
+// A shadow edge is as sharp as the shadow map's texels: with the photons' coarse map the slab's
+// edge is blurred over several texels; a finer shadow map of its own (--shadow-res) puts it back
+// where the geometry says, while the photons (and so the indirect light) stay the same.
+TEST(DirectLighting, FinerShadowMapSharpensTheShadowEdge) {
+    const auto dir = test::testDir();
+    test::ObjWriter obj;
+    obj.material("white", glm::vec3(0.6f));
+    obj.floor(0.0f, 3.0f);
+    obj.box({-0.5f, 1.0f, -0.5f}, {0.5f, 1.2f, 0.5f});
+    const auto model = obj.write(dir);
+    const glm::dvec3 eye(0, 2.5, 3.5);
+    auto project = [&](glm::dvec3 p) {  // as in BoxCastsAShadowOnTheFloor
+        const glm::dvec3 forward = glm::normalize(-eye);
+        const glm::dvec3 right = glm::normalize(glm::cross(forward, glm::dvec3(0, 1, 0)));
+        const glm::dvec3 up = glm::cross(right, forward);
+        const glm::dvec3 v = p - eye;
+        const double f = 1.0 / std::tan(glm::radians(25.0));
+        const double x = glm::dot(v, right) / glm::dot(v, forward) * f / (128.0 / 96.0);
+        const double y = glm::dot(v, up) / glm::dot(v, forward) * f;
+        return glm::ivec2(int((x * 0.5 + 0.5) * 128), int((0.5 - y * 0.5) * 96));
+    };
+    const double lit = 0.6 / glm::pi<double>() * 3.0;
+    // Along the floor in front of the slab (x = 0, z from 0.35 to 0.85; the edge is at z = 0.5):
+    // how far the penumbra reaches, and where the light reaches half its value.
+    struct Edge {
+        int penumbraSteps = 0;
+        double halfLightZ = 0.0;
+    };
+    auto edge = [&](const std::string& resolutions, const std::string& name) {
+        const auto out = dir / name;
+        const auto result = test::runVct("render -q --scene " + model.string() +
+                                         " --gi off --eye 0,2.5,3.5 --target 0,0,0 --fov 50 --width 128 --height 96"
+                                         " --sun-dir 0,-1,0 --sun-irradiance 3 --aov direct " + resolutions +
+                                         " --hdr-out " + out.string() + ".pfm --out " + out.string() + ".png");
+        EXPECT_EQ(result.exitCode, 0) << result.output;
+        const ImageF image = readHdrImage(out.string() + ".pfm");
+        Edge e;
+        for (int step = 0; step <= 50; ++step) {
+            const double z = 0.35 + 0.01 * step;
+            const glm::ivec2 p = project({0.0, 0.0, z});
+            const double value = image.at(p.x, p.y)[0] / lit;
+            if (value > 0.1 && value < 0.9) ++e.penumbraSteps;
+            if (e.halfLightZ == 0.0 && value >= 0.5) e.halfLightZ = z;
+        }
+        return e;
+    };
+    const Edge coarse = edge("--light-view-res 64 --shadow-res 64", "coarse");
+    const Edge fine = edge("--light-view-res 64 --shadow-res 1024", "fine");
+    std::printf("[ shadow   ] penumbra along the floor: %d cm with the photons' 64² map, %d cm with a 1024² shadow "
+                "map; half light at z = %.2f and %.2f (edge at 0.50)\n",
+                coarse.penumbraSteps, fine.penumbraSteps, coarse.halfLightZ, fine.halfLightZ);
+    EXPECT_GE(coarse.penumbraSteps, 10);
+    EXPECT_LE(fine.penumbraSteps, 4);
+    EXPECT_NEAR(fine.halfLightZ, 0.5, 0.03);
+}
+
 TEST(DirectLighting, BoxCastsAShadowOnTheFloor) {
     const auto dir = test::testDir();
     test::ObjWriter obj;

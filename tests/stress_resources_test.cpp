@@ -104,7 +104,8 @@ TEST(StressResources, EstimateIsAConservativeBoundOfThePoolsUsed) {
         renderer.renderFrame(scene.cameras[0]);
         std::size_t used = 0;
         for (const MemoryPool& pool : renderer.memory()) used += pool.bytes;
-        const MemoryEstimate e = estimateGpuMemory(scene, MemoryRequest{96, 72, 512, levels, true, true});
+        const MemoryEstimate e = estimateGpuMemory(
+            scene, MemoryRequest{96, 72, 512, levels, true, true, false, settings.shadowMapResolution});
         EXPECT_GE(e.total(), used) << levels << " levels";
         EXPECT_LE(double(e.total()), 2.5 * double(used)) << levels << " levels";
         std::printf("[ resources] Cornell %d³: pools %.2f MiB, estimate %.2f MiB (%.2f×)\n", 1 << levels,
@@ -119,6 +120,8 @@ TEST(StressResources, RequestsBeyondGlLimitsFailWithTheLimit) {
         {"--width 20000 --height 100", "16384"},
         {"--width 64 --height 48 --light-view-res 100000", "use 16.."},
         {"--width 64 --height 48 --light-view-res 8", "use 16.."},
+        {"--width 64 --height 48 --shadow-res 100000", "use 16.."},
+        {"--width 64 --height 48 --shadow-res 8", "use 16.."},
         {"--width 64 --height 48 --voxel-levels 11", "use 5..10"},
         {"--width 64 --height 48 --voxel-levels 4", "use 5..10"},
     };

@@ -57,7 +57,7 @@ const std::vector<std::string>& parameterNames() {
     static const std::vector<std::string> names = {"voxel_levels", "cones",          "cone_aperture", "cone_step",
                                                    "cone_offset",  "cone_lift",      "bricks",        "light_view_res",
                                                    "pcf_radius",   "gi",             "bounces",       "samples",
-                                                   "gi_resolution"};
+                                                   "gi_resolution", "shadow_res"};
     return names;
 }
 
@@ -89,6 +89,8 @@ void applyParameter(PointSettings& s, const std::string& name, const Json& v) {
         s.bounces = integer(v, what, 1, kMaxBounces);
     } else if (name == "samples") {
         s.pixelSamples = integer(v, what, 1, kMaxPixelSamples);
+    } else if (name == "shadow_res") {
+        s.shadowMapResolution = integer(v, what, 16, kMaxImageSide);
     } else if (name == "gi_resolution") {
         if (!v.is_string()) fail(what, " must be \"full\" or \"half\"");
         try {
@@ -117,6 +119,7 @@ std::string parameterValue(const PointSettings& s, const std::string& name) {
     if (name == "bounces") return std::to_string(s.bounces);
     if (name == "samples") return std::to_string(s.pixelSamples);
     if (name == "gi_resolution") return giResolutionName(s.giResolution);
+    if (name == "shadow_res") return std::to_string(s.shadowMapResolution);
     fail("unknown parameter '", name, "'");
 }
 

@@ -79,7 +79,7 @@ void run(const RenderOptions& o) {
     if (o.memoryBudgetMiB) setMemoryBudgetMiB(*o.memoryBudgetMiB);
     checkMemoryBudget(scene, MemoryRequest{settings.width, settings.height, settings.lightViewResolution,
                                            settings.voxelLevels, needsOctree(settings), needsRadiance(settings),
-                                           settings.bounces > 1});
+                                           settings.bounces > 1, settings.shadowMapResolution});
 
     auto context = gl::createContext(backend);
     Renderer renderer(scene, settings);

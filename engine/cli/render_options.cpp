@@ -11,7 +11,11 @@ void addRenderSettingsOptions(CLI::App& command, RenderSettingsOptions& o) {
         ->capture_default_str();
     command.add_option("--exposure", o.exposureEV, "exposure in stops (EV); default: the scene's");
     command.add_option("--tonemap", o.toneCurve, "tone curve: aces, reinhard, clamp")->capture_default_str();
-    command.add_option("--light-view-res", o.lightViewResolution, "light-view (shadow) map texels per side")
+    command.add_option("--light-view-res", o.lightViewResolution,
+                       "light-view (photon) map texels per side: the light injected into the voxels")
+        ->capture_default_str();
+    command.add_option("--shadow-res", o.shadowMapResolution,
+                       "shadow map texels per side (the direct light's shadow edges; at least --light-view-res)")
         ->capture_default_str();
     command.add_option("--pcf-radius", o.pcfRadius, "shadow filter radius in texels (0 = one tap)")
         ->capture_default_str();
@@ -50,6 +54,7 @@ void addRenderSettingsOptions(CLI::App& command, RenderSettingsOptions& o) {
 RenderSettings renderSettingsFromOptions(const RenderSettingsOptions& o, const Scene& scene) {
     RenderSettings settings;
     settings.lightViewResolution = o.lightViewResolution;
+    settings.shadowMapResolution = o.shadowMapResolution;
     settings.pcfRadius = o.pcfRadius;
     settings.display.aov = parseAov(o.aov);
     settings.display.toneCurve = parseToneCurve(o.toneCurve);

@@ -17,6 +17,7 @@ struct RenderSettingsOptions {
     std::string toneCurve = "aces";
     std::optional<double> exposureEV;  // default: the scene's
     int lightViewResolution = 2048;
+    int shadowMapResolution = 4096;
     int pcfRadius = 1;
     std::string view = "lit";
     int voxelLevels = 8;

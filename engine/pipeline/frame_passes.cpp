@@ -2,6 +2,7 @@
 
 #include "core/error.hpp"
 #include "pipeline/frame_resources.hpp"
+#include "render/pixel_samples.hpp"
 
 namespace vct {
 
@@ -85,7 +86,7 @@ const char* always(const RenderSettings&) { return nullptr; }
 
 void renderLightViews(FrameResources& f) {
     const LightViewCache::Key key{f.version(Input::Geometry), f.version(Input::Materials),
-                                  f.settings.lightViewResolution};
+                                  f.settings.lightViewResolution, f.settings.shadowMapResolution};
     f.statistics.lightViewsRendered = f.lightViews.update(*f.gpuScene, *f.scene, f.lights, key);
     f.statistics.lightViewsTotal = f.lightViews.mapCount();
 }
@@ -220,7 +221,9 @@ const PassTable kFramePasses = {{
     {Pass::GBuffer, "gbuffer", Stage::Camera,
      {I::Geometry, I::Materials, I::Camera, I::OutputSize}, {}, {R::GBuffer}, unlessLitView,
      "scene.vert, gbuffer.frag",
-     [](FrameResources& f, const FrameView& v) { f.gbuffer->render(*f.gpuScene, v.transform); }},
+     [](FrameResources& f, const FrameView& v) {
+         f.gbuffer->render(*f.gpuScene, v.transform, textureLodBias(v.sample));
+     }},
     {Pass::DirectLighting, "direct_lighting", Stage::Camera,
      {I::Lights, I::ShadowSettings}, {R::GBuffer, R::LightViewMaps}, {R::DirectRadiance}, unlessLitView,
      "direct_lighting.comp",

@@ -1,5 +1,6 @@
 #include "pipeline/render_settings.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "core/error.hpp"
@@ -20,6 +21,8 @@ void validateRenderSettings(const RenderSettings& s) {
     validateImageSize(s.width, s.height);
     if (s.lightViewResolution < 16 || s.lightViewResolution > kMaxImageSide)
         fail("--light-view-res ", s.lightViewResolution, " is out of range; use 16..", kMaxImageSide);
+    if (s.shadowMapResolution < 16 || s.shadowMapResolution > kMaxImageSide)
+        fail("--shadow-res ", s.shadowMapResolution, " is out of range; use 16..", kMaxImageSide);
     if (s.pcfRadius < 0 || s.pcfRadius > 8) fail("--pcf-radius ", s.pcfRadius, " is out of range; use 0..8");
     if (s.bounces < 1 || s.bounces > kMaxBounces)
         fail("--bounces ", s.bounces, " is out of range; use 1..", kMaxBounces);
@@ -48,6 +51,9 @@ void validateRenderSettingsForContext(const RenderSettings& s) {
              maxWidth, " and 1..", maxHeight);
     if (s.lightViewResolution > maxTexture)
         fail("--light-view-res ", s.lightViewResolution, " is out of range on this GPU; use 16..", maxTexture);
+    const int maxShadow = std::min({int(maxTexture), int(maxViewport[0]), int(maxViewport[1])});
+    if (s.shadowMapResolution > maxShadow)
+        fail("--shadow-res ", s.shadowMapResolution, " is out of range on this GPU; use 16..", maxShadow);
 }
 
 bool needsOctree(const RenderSettings& s) { return s.view != ViewMode::Lit || s.gi; }

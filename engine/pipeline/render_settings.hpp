@@ -17,7 +17,8 @@ ViewMode parseViewMode(const std::string& name);
 struct RenderSettings {
     int width = 1280;
     int height = 720;
-    int lightViewResolution = 2048;  // texels per side of each light-view (shadow) map
+    int lightViewResolution = 2048;  // texels per side of each light-view (photon) map
+    int shadowMapResolution = 4096;  // texels per side of each shadow map (at least the photons')
     int pcfRadius = 1;               // shadow filter: (2r+1)² hardware-bilinear taps
     DisplaySettings display;
     ViewMode view = ViewMode::Lit;

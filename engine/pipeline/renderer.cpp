@@ -34,7 +34,9 @@ void Renderer::setSettings(const RenderSettings& s) {
         bump(Input::OutputSize);
     }
     if (s.voxelLevels != old.voxelLevels) bump(Input::VoxelSettings);
-    if (s.lightViewResolution != old.lightViewResolution || s.pcfRadius != old.pcfRadius) bump(Input::ShadowSettings);
+    if (s.lightViewResolution != old.lightViewResolution || s.shadowMapResolution != old.shadowMapResolution ||
+        s.pcfRadius != old.pcfRadius)
+        bump(Input::ShadowSettings);
     if (s.photons != old.photons) bump(Input::PhotonSettings);
     if (s.bounces != old.bounces) bump(Input::BounceSettings);
     if (s.cones != old.cones || s.bricks != old.bricks) bump(Input::ConeSettings);

@@ -27,9 +27,9 @@ void DirectLighting::render(const GBuffer& gbuffer, const Scene& scene, const st
     for (std::size_t i = 0; i < lights.size(); ++i)
         for (const LightViewMap& map : lightViews[i]) {
             setLightUniforms(call.program(), lights[i], scene, map.face());
-            call.texture(gl::TEXTURE_SHADOW_MAP, map.depth())
+            call.texture(gl::TEXTURE_SHADOW_MAP, map.shadowMap())
                 .uniform("uLightViewProjection", map.transform().view.viewProjection)
-                .uniform("uShadowTexelSize", map.transform().texelWorldSize)
+                .uniform("uShadowTexelSize", map.shadowTexelWorldSize())
                 .uniform("uShadowPerspective", map.transform().perspective ? 1 : 0)
                 .uniform("uAccumulate", first ? 0 : 1)
                 .dispatchImage(width_, height_, GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);

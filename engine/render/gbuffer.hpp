@@ -10,7 +10,8 @@ namespace vct {
 class GBuffer {
 public:
     GBuffer(int width, int height);
-    void render(const GpuScene& scene, const ViewTransform& camera);
+    // `textureLodBias` ≤ 0 (render/pixel_samples.hpp) sharpens the texture lookups of later samples.
+    void render(const GpuScene& scene, const ViewTransform& camera, float textureLodBias = 0.0f);
 
     GLuint albedo() const { return albedo_.id(); }      // RGBA16F linear albedo
     GLuint normal() const { return normal_.id(); }      // RGBA16F unit normal facing the camera

@@ -10,24 +10,33 @@
 
 namespace vct {
 
-LightViewMap::LightViewMap(int resolution)
+namespace {
+
+// Hardware-filtered shadow comparison; outside the map counts as lit (border depth 0).
+void makeShadowComparison(GLuint depth) {
+    glTextureParameteri(depth, GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
+    glTextureParameteri(depth, GL_TEXTURE_COMPARE_FUNC, GL_GEQUAL);
+    glTextureParameteri(depth, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    glTextureParameteri(depth, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glTextureParameteri(depth, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_BORDER);
+    glTextureParameteri(depth, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_BORDER);
+    const float border[4] = {0, 0, 0, 0};
+    glTextureParameterfv(depth, GL_TEXTURE_BORDER_COLOR, border);
+}
+
+}  // namespace
+
+LightViewMap::LightViewMap(int resolution, int shadowResolution)
     : resolution_(resolution),
+      shadowResolution_(std::max(resolution, shadowResolution)),
       depth_(gl::createTexture2D(GL_DEPTH_COMPONENT32F, resolution, resolution, 1, "light-view depth")),
       position_(gl::createTexture2D(GL_RGBA32F, resolution, resolution, 1, "light-view position")),
       normal_(gl::createTexture2D(GL_RGBA16F, resolution, resolution, 1, "light-view normal")),
       flux_(gl::createTexture2D(GL_RGBA32F, resolution, resolution, 1, "light-view flux")),
       framebuffer_(gl::createFramebuffer("light-view")),
       program_(gl::buildProgram({{GL_VERTEX_SHADER, "scene.vert"}, {GL_FRAGMENT_SHADER, "light_view.frag"}})) {
-    // Hardware-filtered shadow comparison; outside the map counts as lit (border depth 0).
     const GLuint d = depth_.id();
-    glTextureParameteri(d, GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
-    glTextureParameteri(d, GL_TEXTURE_COMPARE_FUNC, GL_GEQUAL);
-    glTextureParameteri(d, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-    glTextureParameteri(d, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-    glTextureParameteri(d, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_BORDER);
-    glTextureParameteri(d, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_BORDER);
-    const float border[4] = {0, 0, 0, 0};
-    glTextureParameterfv(d, GL_TEXTURE_BORDER_COLOR, border);
+    makeShadowComparison(d);
 
     const GLuint fbo = framebuffer_.id();
     glNamedFramebufferTexture(fbo, GL_COLOR_ATTACHMENT0, position_.id(), 0);
@@ -38,6 +47,16 @@ LightViewMap::LightViewMap(int resolution)
     glNamedFramebufferDrawBuffers(fbo, 3, buffers);
     if (glCheckNamedFramebufferStatus(fbo, GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
         fail("the light-view framebuffer is incomplete on this driver (", resolution, "²)");
+    if (shadowResolution_ > resolution_) {
+        shadowDepth_ = gl::createTexture2D(GL_DEPTH_COMPONENT32F, shadowResolution_, shadowResolution_, 1,
+                                           "shadow map");
+        makeShadowComparison(shadowDepth_.id());
+        shadowFramebuffer_ = gl::createFramebuffer("shadow map");
+        glNamedFramebufferTexture(shadowFramebuffer_.id(), GL_DEPTH_ATTACHMENT, shadowDepth_.id(), 0);
+        glNamedFramebufferDrawBuffer(shadowFramebuffer_.id(), GL_NONE);
+        if (glCheckNamedFramebufferStatus(shadowFramebuffer_.id(), GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
+            fail("the shadow-map framebuffer is incomplete on this driver (", shadowResolution_, "²)");
+    }
 }
 
 int lightViewCount(const Light& light) { return light.type == LightType::Point ? kCubeFaces : 1; }
@@ -46,7 +65,10 @@ double LightViewMap::maxTexelFlux(const Light& light, const LightViewTransform& 
     return lightQuantity(light) * std::max({light.color.x, light.color.y, light.color.z}) * transform.texelFootprint;
 }
 
-std::size_t LightViewMap::bytes() const { return std::size_t(resolution_) * resolution_ * (4 + 16 + 8 + 16); }
+std::size_t LightViewMap::bytes() const {
+    const std::size_t shadow = shadowDepth_.id() ? std::size_t(shadowResolution_) * shadowResolution_ * 4 : 0;
+    return std::size_t(resolution_) * resolution_ * (4 + 16 + 8 + 16) + shadow;
+}
 
 void LightViewMap::render(const GpuScene& gpuScene, const Scene& scene, const Light& light, int face) {
     // Every light reaches the GPU through here (Renderer::setLights validates too, a Scene's own
@@ -65,6 +87,12 @@ void LightViewMap::render(const GpuScene& gpuScene, const Scene& scene, const Li
                    float(1.0 / (lightQuantity(light) * std::max({light.color.x, light.color.y, light.color.z}))));
     setLightUniforms(p, light, scene, face);
     gpuScene.draw(p);
+    if (shadowDepth_.id()) {
+        // Depth only: the same program (its alpha test cuts the same holes), no colour targets.
+        gl::beginRasterPass({shadowFramebuffer_.id(), shadowResolution_, shadowResolution_, true});
+        glClearNamedFramebufferfv(shadowFramebuffer_.id(), GL_DEPTH, 0, zero);
+        gpuScene.draw(p);
+    }
     gl::endRasterPass();
 }
 

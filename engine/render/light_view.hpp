@@ -1,7 +1,10 @@
 #pragma once
-// Light-view map (DESIGN §4 pass 7): the scene rendered from one light. Its depth is the shadow
-// map of the direct pass; position, normal and reflected flux per texel are the photons that the
-// GI pipeline injects into the voxel octree. A sun or a spot has one map; a point light has six,
+// Light-view map (DESIGN §4 pass 7): the scene rendered from one light. Position, normal and
+// reflected flux per texel are the photons that the GI pipeline injects into the voxel octree;
+// a depth map is the shadow map of the direct pass. The two want different resolutions: a shadow
+// edge is as sharp as the shadow map's texels, far finer than a voxel, while a few photons per
+// voxel face suffice. With a finer shadow map the scene is drawn a second time, depth only, at
+// its resolution; at the same resolution the photons' depth is the shadow map. A sun or a spot has one map; a point light has six,
 // the faces of a cube around it (render/cube_faces.hpp), and every pass takes them one by one.
 #include <vector>
 
@@ -13,11 +16,12 @@ namespace vct {
 
 class LightViewMap {
 public:
-    explicit LightViewMap(int resolution);
+    LightViewMap(int photonResolution, int shadowResolution);
     // `face`: which cube face of a point light this map shows (0 for the other lights).
     void render(const GpuScene& gpuScene, const Scene& scene, const Light& light, int face = 0);
 
-    GLuint depth() const { return depth_.id(); }        // DEPTH32F, compare mode GL_GEQUAL
+    // DEPTH32F, compare mode GL_GEQUAL, shadowResolution() texels per side.
+    GLuint shadowMap() const { return shadowDepth_.id() ? shadowDepth_.id() : depth_.id(); }
     GLuint position() const { return position_.id(); }  // RGBA32F scene-local, w=0 empty
     GLuint normal() const { return normal_.id(); }      // RGBA16F facing the light
     // RGBA32F reflected flux ρ·Φ of each texel *relative to* the light's largest texel flux
@@ -27,15 +31,19 @@ public:
     // Watts of a texel of relative flux 1: quantity (E or I) × largest colour component × footprint.
     static double maxTexelFlux(const Light& light, const LightViewTransform& transform);
     const LightViewTransform& transform() const { return transform_; }
-    int resolution() const { return resolution_; }
+    int resolution() const { return resolution_; }  // of the photons
+    int shadowResolution() const { return shadowResolution_; }
+    // The shadow map's texel edge (LightViewTransform::texelWorldSize at its resolution).
+    float shadowTexelWorldSize() const { return transform_.texelWorldSize * float(resolution_) / float(shadowResolution_); }
     int face() const { return face_; }
     std::size_t bytes() const;
 
 private:
-    int resolution_;
+    int resolution_, shadowResolution_;
     int face_ = 0;
     gl::Texture depth_, position_, normal_, flux_;
-    gl::Framebuffer framebuffer_;
+    gl::Texture shadowDepth_;  // only when finer than the photons
+    gl::Framebuffer framebuffer_, shadowFramebuffer_;
     gl::Program program_;
     LightViewTransform transform_;
 };

@@ -1,7 +1,7 @@
 #pragma once
 // The light-view maps of the scene's lights: one per light, six (a cube) per point light. A
 // light's maps are rendered again only when the light changed (Light::operator==) or when what every map shows changed: the geometry, the
-// materials or the map resolution (`Key`).
+// materials or the map resolutions (`Key`).
 #include <optional>
 #include <vector>
 
@@ -13,7 +13,7 @@ class LightViewCache {
 public:
     struct Key {
         std::uint64_t geometryVersion = 0, materialsVersion = 0;
-        int resolution = 0;
+        int resolution = 0, shadowResolution = 0;
         bool operator==(const Key&) const = default;
     };
 

@@ -55,14 +55,25 @@ std::size_t estimateVoxelBytes(const Scene& scene, int levels, bool radiance, bo
     return std::size_t(bytes * 1.1);  // brick pools are rounded up to whole rows and slabs
 }
 
+// The light-view maps at half the resolution (photons and shadows), never below 16 texels.
+void halveMaps(MemoryRequest& r) {
+    r.lightViewResolution = std::max(16, r.lightViewResolution / 2);
+    r.shadowMapResolution = std::max(16, r.shadowMapResolution / 2);
+}
+
 MemoryEstimate estimate(const Scene& scene, const MemoryRequest& r) {
     MemoryEstimate e;
     // G-buffer 52, direct 16, indirect 16, composite 36 (average, sum, 8-bit), voxel view 16 bytes per pixel.
     e.imageTargets = std::size_t(r.width) * std::size_t(r.height) * (52 + 16 + 16 + 36 + 16);
-    // Depth 4, position 16, normal 8, flux 16 bytes per texel, one map per light.
+    // Depth 4, position 16, normal 8, flux 16 bytes per texel, one map per light, and a finer
+    // shadow map (depth, 4 bytes per texel) beside each.
     std::size_t maps = 0;  // a point light has six (a cube), the others one
     for (const Light& light : scene.lights) maps += std::size_t(lightViewCount(light));
-    e.lightViewMaps = std::size_t(r.lightViewResolution) * std::size_t(r.lightViewResolution) * 44 *
+    const std::size_t shadowTexels = r.shadowMapResolution > r.lightViewResolution
+                                         ? std::size_t(r.shadowMapResolution) * std::size_t(r.shadowMapResolution)
+                                         : 0;
+    e.lightViewMaps = (std::size_t(r.lightViewResolution) * std::size_t(r.lightViewResolution) * 44 +
+                       shadowTexels * 4) *
                       std::max<std::size_t>(maps, 1);
     e.sceneData = scene.vertices.size() * sizeof(Vertex) + scene.indices.size() * 4 + scene.materials.size() * 32;
     for (const Texture& t : scene.textures) e.sceneData += std::size_t(t.width) * std::size_t(t.height) * 4 * 4 / 3;
@@ -103,25 +114,27 @@ void checkMemoryBudget(const Scene& scene, const MemoryRequest& request) {
     for (int step = 0; step < 200 && total > *budget; ++step) {
         const MemoryEstimate now = estimate(scene, r);
         const bool voxels = r.octree && r.voxelLevels > kMinVoxelLevels;
-        const bool maps = r.lightViewResolution > 16;
+        const bool maps = r.lightViewResolution > 16 || r.shadowMapResolution > 16;
         const bool image = r.width > 1 || r.height > 1;
         if (voxels && now.voxels >= now.lightViewMaps && now.voxels >= now.imageTargets) --r.voxelLevels;
-        else if (maps && now.lightViewMaps >= now.imageTargets) r.lightViewResolution /= 2;
+        else if (maps && now.lightViewMaps >= now.imageTargets) halveMaps(r);
         else if (image) {
             r.width = std::max(1, int(r.width * 0.9));
             r.height = std::max(1, int(r.height * 0.9));
         } else if (voxels) --r.voxelLevels;
-        else if (maps) r.lightViewResolution /= 2;
+        else if (maps) halveMaps(r);
         else break;
         total = estimate(scene, r).total();
     }
     std::string fits;
     if (total > *budget) {
         fits = concat("nothing: even --voxel-levels ", r.voxelLevels, " --light-view-res ", r.lightViewResolution,
+                      " --shadow-res ", r.shadowMapResolution,
                       " at ", r.width, "x", r.height, " needs about ", mibText(total));
     } else {
         if (r.voxelLevels != request.voxelLevels) fits += concat("--voxel-levels ", r.voxelLevels, " ");
         if (r.lightViewResolution != request.lightViewResolution) fits += concat("--light-view-res ", r.lightViewResolution, " ");
+        if (r.shadowMapResolution != request.shadowMapResolution) fits += concat("--shadow-res ", r.shadowMapResolution, " ");
         if (r.width != request.width || r.height != request.height) fits += concat("--width ", r.width, " --height ", r.height, " ");
         fits += concat("(about ", mibText(total), ")");
     }

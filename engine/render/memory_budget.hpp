@@ -25,6 +25,7 @@ struct MemoryRequest {
     bool octree = true;    // GI or a voxel view
     bool radiance = true;  // GI or the radiance view
     bool bounces = false;  // further bounces (`--bounces` > 1): a copy of every voxel's first bounce
+    int shadowMapResolution = 0;  // a depth map of its own per light-view map when above lightViewResolution
 };
 
 struct MemoryEstimate {

@@ -4,6 +4,9 @@
 // plain frame; sample k > 0 is the k-th point of the Halton (2, 3) sequence, a low-discrepancy
 // set: every prefix of it covers the pixel evenly, so the average converges to the pixel's area
 // integral (what the reference renderer computes) at any sample count, not only at squares.
+#include <algorithm>
+#include <cmath>
+
 #include <glm/glm.hpp>
 
 namespace vct {
@@ -21,6 +24,16 @@ inline double radicalInverse(unsigned index, unsigned base) {
 inline glm::dvec2 pixelSampleOffset(int sample) {
     if (sample <= 0) return glm::dvec2(0.0);
     return {radicalInverse(unsigned(sample), 2) - 0.5, radicalInverse(unsigned(sample), 3) - 0.5};
+}
+
+// The texture level-of-detail bias of sample k: 0 for the first, then −½·log2(k + 1), down to −2.
+// A mip level is a filter one pixel wide; averaging N such lookups at jittered points blurs
+// textures over about two pixels, while the pixel's own area (what the reference integrates, with
+// level-0 lookups) is one. Taking the later samples from finer levels (a footprint of 1/√(k+1)
+// pixel) lets the average converge to the pixel's area instead; the floor keeps aliasing of
+// single samples bounded.
+inline float textureLodBias(int sample) {
+    return sample <= 0 ? 0.0f : std::max(-2.0f, -0.5f * std::log2(float(sample + 1)));
 }
 
 }  // namespace vct

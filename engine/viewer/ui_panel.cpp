@@ -172,6 +172,19 @@ bool comboOf(const char* label, int& index, const char* const items[], int count
     return ImGui::Combo(label, &index, items, count);
 }
 
+// A map resolution from a list of powers of two; a value from the command line that is not in the
+// list shows empty until one is picked.
+bool resolutionCombo(const char* label, int& value) {
+    static const int resolutions[] = {256, 512, 1024, 2048, 4096, 8192};
+    static const char* const names[] = {"256", "512", "1024", "2048", "4096", "8192"};
+    constexpr int count = 6;
+    int index = int(std::find(std::begin(resolutions), std::end(resolutions), value) - std::begin(resolutions));
+    if (index == count) index = -1;
+    if (!comboOf(label, index, names, count)) return false;
+    value = resolutions[index];
+    return true;
+}
+
 // Each widget reports an edit; `changed` collects them so the renderer is told only then.
 void settingsSection(ViewerState& state, bool& changed) {
     if (!ImGui::CollapsingHeader("Settings")) return;
@@ -237,15 +250,8 @@ void settingsSection(ViewerState& state, bool& changed) {
     changed |= ImGui::SliderFloat("offset (voxels)", &s.cones.offset, 0.0f, 16.0f, "%.2f", ImGuiSliderFlags_AlwaysClamp);
     changed |= ImGui::SliderFloat("lift", &s.cones.lift, 0.0f, 4.0f, "%.2f", ImGuiSliderFlags_AlwaysClamp);
     changed |= ImGui::SliderInt("PCF radius", &s.pcfRadius, 0, 8, "%d", ImGuiSliderFlags_AlwaysClamp);
-    static const int resolutions[] = {256, 512, 1024, 2048, 4096};
-    static const char* const resolutionNames[] = {"256", "512", "1024", "2048", "4096"};
-    int resolution = int(std::find(std::begin(resolutions), std::end(resolutions), s.lightViewResolution) -
-                         std::begin(resolutions));
-    if (resolution == 5) resolution = -1;  // a value from the command line that is not in the list
-    if (comboOf("light-view map", resolution, resolutionNames, 5)) {
-        s.lightViewResolution = resolutions[resolution];
-        changed = true;
-    }
+    changed |= resolutionCombo("light-view map (photons)", s.lightViewResolution);
+    changed |= resolutionCombo("shadow map", s.shadowMapResolution);
 }
 
 }  // namespace
