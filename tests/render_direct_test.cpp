@@ -117,6 +117,21 @@ TEST(DirectLighting, PointLightOnPlaneMatchesInverseSquareAcrossItsCubeFaces) {
     EXPECT_GE(beyondSeam, 8);  // the row does reach the side faces
 }
 
+namespace {
+// The pixel of world point p in the slab scenes' view (--eye 0,2.5,3.5 --target 0,0,0 --fov 50,
+// 128×96), for the shadow tests.
+glm::ivec2 slabScenePixel(glm::dvec3 p) {
+    const glm::dvec3 eye(0, 2.5, 3.5), forward = glm::normalize(-eye);
+    const glm::dvec3 right = glm::normalize(glm::cross(forward, glm::dvec3(0, 1, 0)));
+    const glm::dvec3 up = glm::cross(right, forward);
+    const glm::dvec3 v = p - eye;
+    const double f = 1.0 / std::tan(glm::radians(25.0));
+    const double x = glm::dot(v, right) / glm::dot(v, forward) * f / (128.0 / 96.0);
+    const double y = glm::dot(v, up) / glm::dot(v, forward) * f;
+    return glm::ivec2(int((x * 0.5 + 0.5) * 128), int((0.5 - y * 0.5) * 96));
+}
+}  // namespace
+
 // A shadow edge is as sharp as the shadow map's texels: with the photons' coarse map the slab's
 // edge is blurred over several texels; a finer shadow map of its own (--shadow-res) puts it back
 // where the geometry says, while the photons (and so the indirect light) stay the same.
@@ -127,17 +142,6 @@ TEST(DirectLighting, FinerShadowMapSharpensTheShadowEdge) {
     obj.floor(0.0f, 3.0f);
     obj.box({-0.5f, 1.0f, -0.5f}, {0.5f, 1.2f, 0.5f});
     const auto model = obj.write(dir);
-    const glm::dvec3 eye(0, 2.5, 3.5);
-    auto project = [&](glm::dvec3 p) {  // as in BoxCastsAShadowOnTheFloor
-        const glm::dvec3 forward = glm::normalize(-eye);
-        const glm::dvec3 right = glm::normalize(glm::cross(forward, glm::dvec3(0, 1, 0)));
-        const glm::dvec3 up = glm::cross(right, forward);
-        const glm::dvec3 v = p - eye;
-        const double f = 1.0 / std::tan(glm::radians(25.0));
-        const double x = glm::dot(v, right) / glm::dot(v, forward) * f / (128.0 / 96.0);
-        const double y = glm::dot(v, up) / glm::dot(v, forward) * f;
-        return glm::ivec2(int((x * 0.5 + 0.5) * 128), int((0.5 - y * 0.5) * 96));
-    };
     const double lit = 0.6 / glm::pi<double>() * 3.0;
     // Along the floor in front of the slab (x = 0, z from 0.35 to 0.85; the edge is at z = 0.5):
     // how far the penumbra reaches, and where the light reaches half its value.
@@ -156,7 +160,7 @@ TEST(DirectLighting, FinerShadowMapSharpensTheShadowEdge) {
         Edge e;
         for (int step = 0; step <= 50; ++step) {
             const double z = 0.35 + 0.01 * step;
-            const glm::ivec2 p = project({0.0, 0.0, z});
+            const glm::ivec2 p = slabScenePixel({0.0, 0.0, z});
             const double value = image.at(p.x, p.y)[0] / lit;
             if (value > 0.1 && value < 0.9) ++e.penumbraSteps;
             if (e.halfLightZ == 0.0 && value >= 0.5) e.halfLightZ = z;
@@ -188,25 +192,15 @@ TEST(DirectLighting, BoxCastsAShadowOnTheFloor) {
                                      ".pfm --out " + out.string() + ".png");
     ASSERT_EQ(result.exitCode, 0) << result.output;
     const ImageF image = readHdrImage(out.string() + ".pfm");
-    // Project world points to pixels with the same camera to find the shadowed and lit floor.
-    auto project = [&](glm::dvec3 p) {
-        const glm::dvec3 eye(0, 2.5, 3.5), forward = glm::normalize(-eye);
-        const glm::dvec3 right = glm::normalize(glm::cross(forward, glm::dvec3(0, 1, 0)));
-        const glm::dvec3 up = glm::cross(right, forward);
-        const glm::dvec3 v = p - eye;
-        const double f = 1.0 / std::tan(glm::radians(25.0));
-        const double x = glm::dot(v, right) / glm::dot(v, forward) * f / (128.0 / 96.0);
-        const double y = glm::dot(v, up) / glm::dot(v, forward) * f;
-        return glm::ivec2(int((x * 0.5 + 0.5) * 128), int((0.5 - y * 0.5) * 96));
-    };
+    // The shadowed and lit floor, found by projecting world points with the same camera.
     const double lit = 0.6 / glm::pi<double>() * 3.0;
-    const glm::ivec2 litPixel = project({2.0, 0.0, 1.5});
+    const glm::ivec2 litPixel = slabScenePixel({2.0, 0.0, 1.5});
     EXPECT_NEAR(image.at(litPixel.x, litPixel.y)[0], lit, 0.01 * lit);
     // The floor under the slab's centre is hidden by the slab from this camera, so look at the
     // part of the shadow in front of it: z in (0.35, 0.5) is shadowed and visible.
-    const glm::ivec2 shadowPixel = project({0.0, 0.0, 0.45});
+    const glm::ivec2 shadowPixel = slabScenePixel({0.0, 0.0, 0.45});
     EXPECT_LT(image.at(shadowPixel.x, shadowPixel.y)[0], 0.02 * lit) << shadowPixel.x << "," << shadowPixel.y;
-    const glm::ivec2 besideShadow = project({0.0, 0.0, 0.7});
+    const glm::ivec2 besideShadow = slabScenePixel({0.0, 0.0, 0.7});
     EXPECT_NEAR(image.at(besideShadow.x, besideShadow.y)[0], lit, 0.02 * lit);
 }
 
