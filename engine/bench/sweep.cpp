@@ -80,7 +80,9 @@ void applyParameter(PointSettings& s, const std::string& name, const Json& v) {
     } else if (name == "bricks") {
         s.bricks = boolean(v, what);
     } else if (name == "light_view_res") {
-        s.lightViewResolution = integer(v, what, 16, kMaxImageSide);
+        s.lightViewResolution = integer(v, what, 0, kMaxImageSide);
+        if (s.lightViewResolution > 0 && s.lightViewResolution < 16)
+            fail(what, " ", s.lightViewResolution, " is out of range; use 16..", kMaxImageSide, " or 0 (follow the voxels)");
     } else if (name == "pcf_radius") {
         s.pcfRadius = integer(v, what, 0, 8);
     } else if (name == "gi") {

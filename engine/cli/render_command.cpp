@@ -77,7 +77,7 @@ void run(const RenderOptions& o) {
     settings.display = renderSettingsFromOptions(o.render, scene).display;
     // Before any GPU allocation: with a memory budget, a frame that would not fit fails here.
     if (o.memoryBudgetMiB) setMemoryBudgetMiB(*o.memoryBudgetMiB);
-    checkMemoryBudget(scene, MemoryRequest{settings.width, settings.height, settings.lightViewResolution,
+    checkMemoryBudget(scene, MemoryRequest{settings.width, settings.height, photonMapResolution(settings),
                                            settings.voxelLevels, needsOctree(settings), needsRadiance(settings),
                                            settings.bounces > 1, settings.shadowMapResolution});
 

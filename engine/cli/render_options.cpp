@@ -12,7 +12,8 @@ void addRenderSettingsOptions(CLI::App& command, RenderSettingsOptions& o) {
     command.add_option("--exposure", o.exposureEV, "exposure in stops (EV); default: the scene's");
     command.add_option("--tonemap", o.toneCurve, "tone curve: aces, reinhard, clamp")->capture_default_str();
     command.add_option("--light-view-res", o.lightViewResolution,
-                       "light-view (photon) map texels per side: the light injected into the voxels")
+                       "light-view (photon) map texels per side: the light injected into the voxels; 0 = four per "
+                       "voxel side, 2^(levels+2) within 256..4096")
         ->capture_default_str();
     command.add_option("--shadow-res", o.shadowMapResolution,
                        "shadow map texels per side (the direct light's shadow edges; at least --light-view-res)")

@@ -16,7 +16,7 @@ struct RenderSettingsOptions {
     std::string aov = "final";
     std::string toneCurve = "aces";
     std::optional<double> exposureEV;  // default: the scene's
-    int lightViewResolution = 2048;
+    int lightViewResolution = 0;
     int shadowMapResolution = 4096;
     int pcfRadius = 1;
     std::string view = "lit";

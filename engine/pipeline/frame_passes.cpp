@@ -86,7 +86,7 @@ const char* always(const RenderSettings&) { return nullptr; }
 
 void renderLightViews(FrameResources& f) {
     const LightViewCache::Key key{f.version(Input::Geometry), f.version(Input::Materials),
-                                  f.settings.lightViewResolution, f.settings.shadowMapResolution};
+                                  photonMapResolution(f.settings), f.settings.shadowMapResolution};
     f.statistics.lightViewsRendered = f.lightViews.update(*f.gpuScene, *f.scene, f.lights, key);
     f.statistics.lightViewsTotal = f.lightViews.mapCount();
 }

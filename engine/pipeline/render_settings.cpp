@@ -19,8 +19,9 @@ ViewMode parseViewMode(const std::string& name) {
 
 void validateRenderSettings(const RenderSettings& s) {
     validateImageSize(s.width, s.height);
-    if (s.lightViewResolution < 16 || s.lightViewResolution > kMaxImageSide)
-        fail("--light-view-res ", s.lightViewResolution, " is out of range; use 16..", kMaxImageSide);
+    if (s.lightViewResolution != 0 && (s.lightViewResolution < 16 || s.lightViewResolution > kMaxImageSide))
+        fail("--light-view-res ", s.lightViewResolution, " is out of range; use 16..", kMaxImageSide,
+             " (or 0: four texels per voxel side)");
     if (s.shadowMapResolution < 16 || s.shadowMapResolution > kMaxImageSide)
         fail("--shadow-res ", s.shadowMapResolution, " is out of range; use 16..", kMaxImageSide);
     if (s.pcfRadius < 0 || s.pcfRadius > 8) fail("--pcf-radius ", s.pcfRadius, " is out of range; use 0..8");
@@ -49,11 +50,16 @@ void validateRenderSettingsForContext(const RenderSettings& s) {
     if (s.width > maxWidth || s.height > maxHeight)
         fail("image size ", s.width, "x", s.height, " is not possible on this GPU; width and height must be within 1..",
              maxWidth, " and 1..", maxHeight);
-    if (s.lightViewResolution > maxTexture)
-        fail("--light-view-res ", s.lightViewResolution, " is out of range on this GPU; use 16..", maxTexture);
+    if (photonMapResolution(s) > maxTexture)
+        fail("--light-view-res ", photonMapResolution(s), " is out of range on this GPU; use 16..", maxTexture);
     const int maxShadow = std::min({int(maxTexture), int(maxViewport[0]), int(maxViewport[1])});
     if (s.shadowMapResolution > maxShadow)
         fail("--shadow-res ", s.shadowMapResolution, " is out of range on this GPU; use 16..", maxShadow);
+}
+
+int photonMapResolution(const RenderSettings& s) {
+    if (s.lightViewResolution > 0) return s.lightViewResolution;
+    return std::clamp(1 << std::clamp(s.voxelLevels + 2, 0, 30), 256, 4096);
 }
 
 bool needsOctree(const RenderSettings& s) { return s.view != ViewMode::Lit || s.gi; }

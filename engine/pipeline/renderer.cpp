@@ -34,7 +34,7 @@ void Renderer::setSettings(const RenderSettings& s) {
         bump(Input::OutputSize);
     }
     if (s.voxelLevels != old.voxelLevels) bump(Input::VoxelSettings);
-    if (s.lightViewResolution != old.lightViewResolution || s.shadowMapResolution != old.shadowMapResolution ||
+    if (photonMapResolution(s) != photonMapResolution(old) || s.shadowMapResolution != old.shadowMapResolution ||
         s.pcfRadius != old.pcfRadius)
         bump(Input::ShadowSettings);
     if (s.photons != old.photons) bump(Input::PhotonSettings);

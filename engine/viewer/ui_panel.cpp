@@ -174,10 +174,11 @@ bool comboOf(const char* label, int& index, const char* const items[], int count
 
 // A map resolution from a list of powers of two; a value from the command line that is not in the
 // list shows empty until one is picked.
+// 0 stands for "follow the voxels" (the photons' default).
 bool resolutionCombo(const char* label, int& value) {
-    static const int resolutions[] = {256, 512, 1024, 2048, 4096, 8192};
-    static const char* const names[] = {"256", "512", "1024", "2048", "4096", "8192"};
-    constexpr int count = 6;
+    static const int resolutions[] = {0, 256, 512, 1024, 2048, 4096, 8192};
+    static const char* const names[] = {"auto", "256", "512", "1024", "2048", "4096", "8192"};
+    constexpr int count = 7;
     int index = int(std::find(std::begin(resolutions), std::end(resolutions), value) - std::begin(resolutions));
     if (index == count) index = -1;
     if (!comboOf(label, index, names, count)) return false;
@@ -252,6 +253,7 @@ void settingsSection(ViewerState& state, bool& changed) {
     changed |= ImGui::SliderInt("PCF radius", &s.pcfRadius, 0, 8, "%d", ImGuiSliderFlags_AlwaysClamp);
     changed |= resolutionCombo("light-view map (photons)", s.lightViewResolution);
     changed |= resolutionCombo("shadow map", s.shadowMapResolution);
+    if (s.shadowMapResolution == 0) s.shadowMapResolution = 4096;  // "auto" means nothing for the shadow map
 }
 
 }  // namespace
