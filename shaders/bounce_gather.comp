@@ -14,22 +14,22 @@ layout(local_size_x = 64) in;
 
 layout(std430, binding = SSBO_CELL_VALUES) buffer CellAlbedo { uint cellAlbedo[]; };   // RGBA8 albedo, opacity
 layout(std430, binding = SSBO_CELL_NORMAL) buffer CellNormal { uint cellNormal[]; };   // octahedral
-// The first bounce: (L₀·τ, τ) of every cell, then (N₀·τ, τ) of every cell.
+// The first bounce: (L₀·τ, τ) of every cell, then (N₀·τ, τ) of every cell; then the irradiance
+// gathered on both sides of every cell (written for first children, see below).
 layout(std430, binding = SSBO_BOUNCE_BASE) buffer BounceBase { vec4 bounceBase[]; };
+// To save cones, the cells that share a parent node with a cell of nearly the same normal share
+// its gather: the first pass (GATHER_FIRST_CHILDREN) gathers for the first child of every parent
+// and keeps its irradiance, the second (SHARE_WITH_SIBLINGS) gives each other cell that
+// irradiance when their normals agree within ~25° (cos ≥ kShareCosine; opposite normals share
+// with their sides swapped), and gathers its own otherwise (a corner, an edge of two surfaces).
+// Siblings lie within a voxel of each other and cones start 1.5 voxels off the surface, so a
+// shared gather differs from the cell's own by far less than the cones' own blur.
+const float kShareCosine = 0.9;
 
-void main() {
-    uint cell = gl_GlobalInvocationID.x;
-    uint cellCount = uLevelCount[uLevels];
-    if (cell >= cellCount) return;
-    uint node = uLevelStart[uLevels] + cell;
-    vec4 albedo = unpackUnorm4x8(cellAlbedo[cell]);
-    vec3 normal = unpackNormal(cellNormal[cell]);
-    vec3 centre = vec3(unpackCell(nodeCoord[node])) + 0.5;
-    vec3 sent[2];
-    for (int side = 0; side < 2; ++side) {
-        vec3 n = side == 0 ? normal : -normal;
-        sent[side] = albedo.rgb / PI * gatherIrradiance(centre + n * uConeOffset, n).rgb;
-    }
+
+// The cell's outgoing radiance from its first bounce and the irradiance E gathered on each side.
+void storeBounced(uint cell, uint cellCount, uint node, vec4 albedo, vec3 normal, vec3 irradiance[2]) {
+    vec3 sent[2] = vec3[2](albedo.rgb / PI * irradiance[0], albedo.rgb / PI * irradiance[1]);
     vec4 base = bounceBase[cell], baseDirection = bounceBase[cellCount + cell];
     vec3 first = base.a > 0.0 ? base.rgb / base.a : vec3(0.0);
     vec3 firstDirection = baseDirection.a > 0.0 ? baseDirection.rgb / baseDirection.a : vec3(0.0);
@@ -42,4 +42,48 @@ void main() {
     cellRadiance[cell] = vec4(radiance * tau, tau);
     cellDirection[cell] = vec4(direction * tau, tau);
     touch(node, uLevels);
+}
+
+void main() {
+    uint cellCount = uLevelCount[uLevels];
+#ifdef GATHER_FIRST_CHILDREN
+    // One invocation per leaf node, so that every invocation gathers: an invocation per cell that
+    // returned for all but first children would cost as much on a SIMD machine as gathering for all.
+    uint leaf = gl_GlobalInvocationID.x;
+    if (leaf >= uLevelCount[uLevels - 1]) return;
+    uint node = nodeChild[uLevelStart[uLevels - 1] + leaf];
+    uint cell = node - uLevelStart[uLevels];
+#else
+    uint cell = gl_GlobalInvocationID.x;
+    if (cell >= cellCount) return;
+    uint node = uLevelStart[uLevels] + cell;
+    uint firstSibling = nodeChild[nodeParent[node]];
+    if (firstSibling == node) return;
+#endif
+    vec4 albedo = unpackUnorm4x8(cellAlbedo[cell]);
+    vec3 normal = unpackNormal(cellNormal[cell]);
+    vec3 irradiance[2];
+    bool own = true;
+#ifdef SHARE_WITH_SIBLINGS
+    uint sibling = firstSibling - uLevelStart[uLevels];
+    float agreement = dot(normal, unpackNormal(cellNormal[sibling]));
+    if (abs(agreement) >= kShareCosine) {
+        int flip = agreement < 0.0 ? 1 : 0;
+        irradiance[0] = bounceBase[2u * cellCount + 2u * sibling + uint(flip)].rgb;
+        irradiance[1] = bounceBase[2u * cellCount + 2u * sibling + uint(1 - flip)].rgb;
+        own = false;
+    }
+#endif
+    if (own) {
+        vec3 centre = vec3(unpackCell(nodeCoord[node])) + 0.5;
+        for (int side = 0; side < 2; ++side) {
+            vec3 n = side == 0 ? normal : -normal;
+            irradiance[side] = gatherIrradiance(centre + n * uConeOffset, n).rgb;
+        }
+    }
+#ifdef GATHER_FIRST_CHILDREN
+    bounceBase[2u * cellCount + 2u * cell] = vec4(irradiance[0], 0.0);
+    bounceBase[2u * cellCount + 2u * cell + 1u] = vec4(irradiance[1], 0.0);
+#endif
+    storeBounced(cell, cellCount, node, albedo, normal, irradiance);
 }

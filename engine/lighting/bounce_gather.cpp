@@ -4,28 +4,35 @@
 
 namespace vct {
 
-BounceGather::BounceGather() : gather_(gl::buildProgram({{GL_COMPUTE_SHADER, "bounce_gather.comp"}})) {}
+BounceGather::BounceGather()
+    : gatherFirstChildren_(gl::buildProgram({{GL_COMPUTE_SHADER, "bounce_gather.comp"}}, {"GATHER_FIRST_CHILDREN 1"})),
+      shareWithSiblings_(gl::buildProgram({{GL_COMPUTE_SHADER, "bounce_gather.comp"}}, {"SHARE_WITH_SIBLINGS 1"})) {}
 
 void BounceGather::run(const Octree& octree, RadianceVolume& volume, RadianceFilter& filter, int bounces,
                        const ConeSettings& cones) {
     const std::size_t cells = octree.cellCount();
     const std::size_t half = cells * 16;  // one vec4 per cell
-    if (baseBytes_ != 2 * half) {
-        base_ = gl::createBuffer(GLsizeiptr(2 * half), nullptr, 0, "first-bounce radiance");
-        baseBytes_ = 2 * half;
+    if (baseBytes_ != 4 * half) {
+        base_ = gl::createBuffer(GLsizeiptr(4 * half), nullptr, 0, "first-bounce radiance, gathered irradiance");
+        baseBytes_ = 4 * half;
     }
     glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);
     glCopyNamedBufferSubData(volume.cellRadiance.id(), base_.id(), 0, 0, GLsizeiptr(half));
     glCopyNamedBufferSubData(volume.cellDirection.id(), base_.id(), 0, GLintptr(half), GLsizeiptr(half));
     for (int bounce = 2; bounce <= bounces; ++bounce) {
-        gl::ComputeCall call(gather_);
-        setConeMarchUniforms(call, octree, volume, cones);
-        bindRadianceVolume(volume);
-        call.storage(gl::SSBO_CELL_VALUES, octree.cellAlbedo)
-            .storage(gl::SSBO_CELL_NORMAL, octree.cellNormal)
-            .storage(gl::SSBO_BOUNCE_BASE, base_)
-            .dispatch1D(std::uint32_t(cells), 64,
-                        GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT);
+        // First children (one per leaf node), then their siblings (one per cell), which read what
+        // the first children gathered.
+        for (const gl::Program* program : {&gatherFirstChildren_, &shareWithSiblings_}) {
+            const std::size_t invocations = program == &gatherFirstChildren_ ? octree.leafCount() : cells;
+            gl::ComputeCall call(*program);
+            setConeMarchUniforms(call, octree, volume, cones);
+            bindRadianceVolume(volume);
+            call.storage(gl::SSBO_CELL_VALUES, octree.cellAlbedo)
+                .storage(gl::SSBO_CELL_NORMAL, octree.cellNormal)
+                .storage(gl::SSBO_BOUNCE_BASE, base_)
+                .dispatch1D(std::uint32_t(invocations), 64,
+                            GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT);
+        }
         filter.leaves(octree, volume);
         filter.mip(octree, volume);
     }

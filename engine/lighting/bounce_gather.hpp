@@ -5,7 +5,8 @@
 // first bounce plus ρ/π of that irradiance, and filters the radiance bricks again
 // (RadianceFilter): after N − 1 of these the bricks hold N bounces. The voxels' own radiance is
 // put back to the first bounce at the end, so that the radiance filter alone (after a change of
-// the bounce count) gives one bounce again.
+// the bounce count) gives one bounce again. Cells whose parent's first child has nearly their
+// normal take that child's gathered irradiance instead of gathering their own.
 #include "gl/objects.hpp"
 #include "lighting/radiance_filter.hpp"
 #include "render/cone_trace.hpp"
@@ -24,8 +25,10 @@ public:
     std::size_t bytes() const { return baseBytes_; }
 
 private:
-    gl::Program gather_;
-    gl::Buffer base_;  // the first bounce: (L·τ, τ) then (N·τ, τ) of every cell
+    gl::Program gatherFirstChildren_, shareWithSiblings_;
+    // The first bounce, (L·τ, τ) then (N·τ, τ) of every cell, then the irradiance on both sides
+    // of every cell (written for first children).
+    gl::Buffer base_;
     std::size_t baseBytes_ = 0;
 };
 

@@ -51,7 +51,8 @@ std::size_t estimateVoxelBytes(const Scene& scene, int levels, bool radiance, bo
     // Radiance: accumulators, cell radiance and direction, flags; per node flags and lists and the
     // six radiance pools of 27 RGBA32F samples (brick_layout.hpp, "Slabs").
     if (radiance) bytes += cells * (40 + 16 + 16 + 8) + nodes * (8 + 8 + 6 * 27 * 16);
-    if (radiance && bounces) bytes += cells * 32;  // the first bounce's radiance and direction (bounce_gather)
+    // The first bounce's radiance and direction, and the irradiance first children gather (bounce_gather).
+    if (radiance && bounces) bytes += cells * 64;
     return std::size_t(bytes * 1.1);  // brick pools are rounded up to whole rows and slabs
 }
 

@@ -59,6 +59,7 @@ struct Octree {
     gl::Texture brickOpacityPlus, brickOpacityMinus;
 
     std::uint32_t cellCount() const { return levelCount[levels]; }
+    std::uint32_t leafCount() const { return levelCount[levels - 1]; }  // nodes whose children are cells
     std::size_t nodePoolBytes() const { return std::size_t(totalCount) * 16; }
     std::size_t neighbourBytes() const { return std::size_t(nodeCount) * 24; }
     std::size_t cellBytes() const { return std::size_t(cellCount()) * (20 + (hasEmissive ? 16 : 0)); }
