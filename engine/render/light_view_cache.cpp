@@ -5,8 +5,15 @@ namespace vct {
 std::uint32_t LightViewCache::update(const GpuScene& gpuScene, const Scene& scene, const std::vector<Light>& lights,
                                      const Key& key) {
     if (key_ != key || views_.size() != lights.size()) {
-        clear();
-        views_.resize(lights.size());
+        // New geometry or materials only change what the maps show: keep their GPU objects (and
+        // the driver's compiled shaders with them) and draw them again. New resolutions, or another
+        // number of lights, need new maps.
+        const bool sameMaps = key_ && key_->resolution == key.resolution &&
+                              key_->shadowResolution == key.shadowResolution && views_.size() == lights.size();
+        if (!sameMaps) {
+            clear();
+            views_.resize(lights.size());
+        }
         renderedFor_.assign(lights.size(), std::nullopt);
         key_ = key;
     }
