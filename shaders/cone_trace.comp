@@ -5,7 +5,7 @@ layout(local_size_x = 8, local_size_y = 8) in;
 // Output: E (rgb) and ambient visibility (a: 1 = nothing in the way).
 //
 // With uDownscale = 1 every pixel is traced, straight into the indirect image. With 2, one pixel
-// of each 2×2 block is traced into a quarter-size image, with the pixel it traced (or kNoPixel when
+// of each 2×2 block is traced into a quarter-size image, with the pixel it traced (or NO_TRACED_PIXEL when
 // the whole block is sky); cone_upsample.comp then gives every pixel its irradiance from the
 // traced pixels that share its surface. Which pixel of a block is traced turns with uRotation (the
 // pixel sample), so that accumulated samples trace every pixel in turn.

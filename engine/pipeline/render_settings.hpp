@@ -42,8 +42,8 @@ void validateRenderSettingsForContext(const RenderSettings& settings);
 
 // The photons' light-view map resolution: the one asked for, or by default (0) one that follows
 // the voxels, four texels per voxel side (2^(levels + 2), within 256..4096): photons only need to
-// cover every voxel face a few times, and at 256³ the indirect light moves by at most 2 % between
-// 1024² and 2048² (docs/benchmark.md), while the shadow map has its own resolution.
+// cover every voxel face a few times (docs/benchmark.md "Photons sized to the voxels" measures
+// what finer maps change), while shadow edges have their own map (shadowMapResolution).
 int photonMapResolution(const RenderSettings& settings);
 
 // What a frame with these settings needs (the pass table's skip reasons and the memory budget
