@@ -31,23 +31,16 @@ void main() {
         for (int j = 0; j < 3; ++j)
             for (int x = 0; x < 3; ++x) {
                 ivec3 q = ivec3(x, j, k);
-                // The child slabs at the 27 child samples around 2Q, index (d + 1) · (1, 3, 9): for
-                // each direction, the radiance that reaches the slab's front (seen) and its transmittance.
-                vec3 seen[27][6];
-                float transmittance[27][6];
+                // Where the 27 child samples around 2Q lie in the pools, index (d + 1) · (1, 3, 9);
+                // w = 0 where no child holds one. Only their places are kept (not the six pools' values,
+                // which are read as each direction needs them): a small array, since run-time-indexed
+                // local arrays are slow on some drivers (llvmpipe spills them).
+                ivec4 texels[27];
                 for (int o = 0; o < 27; ++o) {
                     uint child;
                     ivec3 local;
                     bool found = childSampleAt(children, 2 * q + ivec3(o % 3, (o / 3) % 3, o / 9) - 1, child, local);
-                    ivec3 texel = brickOrigin(child) + local;
-                    for (int i = 0; i < 6; ++i) {
-                        // (L·τ, τ), the density of unlit geometry too (radiance_clear.comp): the slab
-                        // sends L·α.
-                        vec4 stored = found ? imageLoad(uDirectional[i], texel) : vec4(0.0);
-                        float alpha = 1.0 - exp(-stored.a * hChild);
-                        transmittance[o][i] = 1.0 - alpha;
-                        seen[o][i] = stored.a > 0.0 ? stored.rgb * (alpha / stored.a) : vec3(0.0);
-                    }
+                    texels[o] = ivec4(found ? brickOrigin(child) + local : ivec3(0), found ? 1 : 0);
                 }
                 vec4 tauPlus = texelFetch(uOpacityPlus, origin + q, 0), tauMinus = texelFetch(uOpacityMinus, origin + q, 0);
                 for (int i = 0; i < 6; ++i) {
@@ -59,9 +52,17 @@ void main() {
                         for (int dc = -1; dc <= 1; ++dc) {
                             int front = aroundAcross(a, db, dc);
                             int back = front + ahead;
+                            // The child slab at each: (L·τ, τ), the density of unlit geometry too
+                            // (radiance_clear.comp): it sends L·α and lets 1 − α through.
+                            vec4 frontStored = texels[front].w != 0 ? imageLoad(uDirectional[i], texels[front].xyz) : vec4(0.0);
+                            vec4 backStored = texels[back].w != 0 ? imageLoad(uDirectional[i], texels[back].xyz) : vec4(0.0);
+                            float frontAlpha = 1.0 - exp(-frontStored.a * hChild);
+                            float backAlpha = 1.0 - exp(-backStored.a * hChild);
+                            vec3 frontSeen = frontStored.a > 0.0 ? frontStored.rgb * (frontAlpha / frontStored.a) : vec3(0.0);
+                            vec3 backSeen = backStored.a > 0.0 ? backStored.rgb * (backAlpha / backStored.a) : vec3(0.0);
                             float weight = w[db + 1] * w[dc + 1];
-                            total += weight * (seen[front][i] + transmittance[front][i] * seen[back][i]);
-                            meanTransmittance += weight * transmittance[front][i] * transmittance[back][i];
+                            total += weight * (frontSeen + (1.0 - frontAlpha) * backSeen);
+                            meanTransmittance += weight * (1.0 - frontAlpha) * (1.0 - backAlpha);
                         }
                     float tau = (i & 1) == 0 ? tauPlus[a] : tauMinus[a];
                     imageStore(uDirectional[i], origin + q, slabRadiance(total, 1.0 - meanTransmittance, tau, 2.0 * hChild));
