@@ -33,8 +33,7 @@ LightViewMap::LightViewMap(int resolution, int shadowResolution)
       position_(gl::createTexture2D(GL_RGBA32F, resolution, resolution, 1, "light-view position")),
       normal_(gl::createTexture2D(GL_RGBA16F, resolution, resolution, 1, "light-view normal")),
       flux_(gl::createTexture2D(GL_RGBA32F, resolution, resolution, 1, "light-view flux")),
-      framebuffer_(gl::createFramebuffer("light-view")),
-      program_(gl::buildProgram({{GL_VERTEX_SHADER, "scene.vert"}, {GL_FRAGMENT_SHADER, "light_view.frag"}})) {
+      framebuffer_(gl::createFramebuffer("light-view")) {
     const GLuint d = depth_.id();
     makeShadowComparison(d);
 
@@ -59,6 +58,10 @@ LightViewMap::LightViewMap(int resolution, int shadowResolution)
     }
 }
 
+gl::Program lightViewProgram() {
+    return gl::buildProgram({{GL_VERTEX_SHADER, "scene.vert"}, {GL_FRAGMENT_SHADER, "light_view.frag"}});
+}
+
 int lightViewCount(const Light& light) { return light.type == LightType::Point ? kCubeFaces : 1; }
 
 double LightViewMap::maxTexelFlux(const Light& light, const LightViewTransform& transform) {
@@ -70,7 +73,8 @@ std::size_t LightViewMap::bytes() const {
     return std::size_t(resolution_) * resolution_ * (4 + 16 + 8 + 16) + shadow;
 }
 
-void LightViewMap::render(const GpuScene& gpuScene, const Scene& scene, const Light& light, int face) {
+void LightViewMap::render(const gl::Program& program, const GpuScene& gpuScene, const Scene& scene, const Light& light,
+                          int face) {
     // Every light reaches the GPU through here (Renderer::setLights validates too, a Scene's own
     // lights are not validated before): nothing non-finite or out of float's range is drawn.
     validateLight(light, "light");
@@ -80,7 +84,7 @@ void LightViewMap::render(const GpuScene& gpuScene, const Scene& scene, const Li
     const float zero[4] = {0, 0, 0, 0};
     for (int i = 0; i < 3; ++i) glClearNamedFramebufferfv(framebuffer_.id(), GL_COLOR, i, zero);
     glClearNamedFramebufferfv(framebuffer_.id(), GL_DEPTH, 0, zero);  // reversed depth: far = 0
-    const GLuint p = program_.id();
+    const GLuint p = program.id();
     glUseProgram(p);
     gl::setUniform(p, "uViewProjection", transform_.view.viewProjection);
     gl::setUniform(p, "uInverseQuantity",

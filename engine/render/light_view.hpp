@@ -18,7 +18,9 @@ class LightViewMap {
 public:
     LightViewMap(int photonResolution, int shadowResolution);
     // `face`: which cube face of a point light this map shows (0 for the other lights).
-    void render(const GpuScene& gpuScene, const Scene& scene, const Light& light, int face = 0);
+    // `program`: scene.vert + light_view.frag (lightViewProgram), shared by every map.
+    void render(const gl::Program& program, const GpuScene& gpuScene, const Scene& scene, const Light& light,
+                int face = 0);
 
     // DEPTH32F, compare mode GL_GEQUAL, shadowResolution() texels per side.
     GLuint shadowMap() const { return shadowDepth_.id() ? shadowDepth_.id() : depth_.id(); }
@@ -44,9 +46,11 @@ private:
     gl::Texture depth_, position_, normal_, flux_;
     gl::Texture shadowDepth_;  // only when finer than the photons
     gl::Framebuffer framebuffer_, shadowFramebuffer_;
-    gl::Program program_;
     LightViewTransform transform_;
 };
+
+// The program every light-view map is drawn with.
+gl::Program lightViewProgram();
 
 // How many maps a light needs: six for a point light (a cube), one for the others.
 int lightViewCount(const Light& light);

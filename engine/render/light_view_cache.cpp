@@ -5,9 +5,8 @@ namespace vct {
 std::uint32_t LightViewCache::update(const GpuScene& gpuScene, const Scene& scene, const std::vector<Light>& lights,
                                      const Key& key) {
     if (key_ != key || views_.size() != lights.size()) {
-        // New geometry or materials only change what the maps show: keep their GPU objects (and
-        // the driver's compiled shaders with them) and draw them again. New resolutions, or another
-        // number of lights, need new maps.
+        // New geometry or materials only change what the maps show: keep their GPU objects and
+        // draw them again. New resolutions, or another number of lights, need new maps.
         const bool sameMaps = key_ && key_->resolution == key.resolution &&
                               key_->shadowResolution == key.shadowResolution && views_.size() == lights.size();
         if (!sameMaps) {
@@ -17,6 +16,7 @@ std::uint32_t LightViewCache::update(const GpuScene& gpuScene, const Scene& scen
         renderedFor_.assign(lights.size(), std::nullopt);
         key_ = key;
     }
+    if (!program_.id()) program_ = lightViewProgram();
     std::uint32_t rendered = 0;
     for (std::size_t i = 0; i < lights.size(); ++i) {
         if (renderedFor_[i] == lights[i]) continue;
@@ -27,7 +27,7 @@ std::uint32_t LightViewCache::update(const GpuScene& gpuScene, const Scene& scen
             maps.clear();
             for (int face = 0; face < count; ++face) maps.emplace_back(key.resolution, key.shadowResolution);
         }
-        for (int face = 0; face < count; ++face) maps[face].render(gpuScene, scene, lights[i], face);
+        for (int face = 0; face < count; ++face) maps[face].render(program_, gpuScene, scene, lights[i], face);
         renderedFor_[i] = lights[i];
         rendered += std::uint32_t(count);
     }
