@@ -47,12 +47,6 @@ void main() {
             count64(CONE_COUNTER_SKY_PIXELS, 1u);
         return;
     }
-    const vec3 normal = normalize(texelFetch(uNormal, pixel, 0).xyz);
-    const vec3 origin = (position.xyz - uVoxelOrigin) * uVoxelScale + normal * uConeOffset;
-    const vec4 gathered = gatherIrradiance(origin, normal);
-    imageStore(uIndirect, cell, vec4(gathered.rgb, 1.0 - gathered.a / PI));
+    imageStore(uIndirect, cell, tracePixel(position.xyz, normalize(texelFetch(uNormal, pixel, 0).xyz)));
     if (uDownscale > 1) imageStore(uTracedPixel, cell, uvec4(uint(pixel.x) | (uint(pixel.y) << 16)));
-    count64(CONE_COUNTER_SAMPLES, samplesTaken);
-    count64(CONE_COUNTER_SAMPLES_SAVED, samplesSaved);
-    count64(CONE_COUNTER_TRACED_PIXELS, 1u);
 }

@@ -1,4 +1,4 @@
-// Shared by cone_trace.comp and cone_upsample.comp.
+// Shared by cone_trace.comp and cone_upsample.comp. Requires cone_march.glsl.
 
 // A block of cone_trace at half resolution that sees only sky traced no pixel.
 const uint NO_TRACED_PIXEL = 0xffffffffu;
@@ -17,4 +17,16 @@ void count64(uint index, uint value) {
     if (value == 0u) return;
     uint old = atomicAdd(coneCounters[index], value);
     if (old + value < old) atomicAdd(coneCounters[index + 1u], 1u);
+}
+
+// The cone set traced from a surface point (scene-local position, unit normal facing the camera):
+// indirect irradiance E (rgb) and ambient visibility (a: 1 = nothing in the way), counted as one
+// traced pixel with its samples.
+vec4 tracePixel(vec3 position, vec3 normal) {
+    const vec3 origin = (position - uVoxelOrigin) * uVoxelScale + normal * uConeOffset;
+    const vec4 gathered = gatherIrradiance(origin, normal);
+    count64(CONE_COUNTER_SAMPLES, samplesTaken);
+    count64(CONE_COUNTER_SAMPLES_SAVED, samplesSaved);
+    count64(CONE_COUNTER_TRACED_PIXELS, 1u);
+    return vec4(gathered.rgb, 1.0 - gathered.a / PI);
 }

@@ -57,10 +57,5 @@ void main() {
         imageStore(uIndirect, pixel, sum / weightSum);
         return;
     }
-    const vec3 origin = (position.xyz - uVoxelOrigin) * uVoxelScale + normal * uConeOffset;
-    const vec4 gathered = gatherIrradiance(origin, normal);
-    imageStore(uIndirect, pixel, vec4(gathered.rgb, 1.0 - gathered.a / PI));
-    count64(CONE_COUNTER_SAMPLES, samplesTaken);
-    count64(CONE_COUNTER_SAMPLES_SAVED, samplesSaved);
-    count64(CONE_COUNTER_TRACED_PIXELS, 1u);
+    imageStore(uIndirect, pixel, tracePixel(position.xyz, normal));
 }

@@ -2,10 +2,10 @@
 // the pixels traced, and the indirect light the same as at full resolution where it matters to a
 // viewer (its mean and its regions); accumulated samples trace every pixel in turn, so they close
 // the remaining gap.
-#include <cmath>
 #include <cstdio>
 
 #include "gl/context.hpp"
+#include "metrics/image_metrics.hpp"
 #include "metrics/region_ratio.hpp"
 #include "pipeline/renderer.hpp"
 #include "scene/scene_loader.hpp"
@@ -37,13 +37,6 @@ IndirectImage renderIndirect(const Scene& scene, GiResolution resolution, int sa
     return {renderer.readHdr(), renderer.statistics().cones};
 }
 
-double rmse(const ImageF& a, const ImageF& b) {
-    double sum = 0.0;
-    for (std::size_t i = 0; i < a.rgba.size(); i += 4)
-        for (int c = 0; c < 3; ++c) sum += std::pow(double(a.rgba[i + c]) - b.rgba[i + c], 2.0);
-    return std::sqrt(sum / double(a.rgba.size() / 4 * 3));
-}
-
 }  // namespace
 
 TEST(ConeUpsample, HalfResolutionTracesAQuarterOfThePixelsAndKeepsTheLight) {
@@ -73,9 +66,9 @@ TEST(ConeUpsample, HalfResolutionTracesAQuarterOfThePixelsAndKeepsTheLight) {
 TEST(ConeUpsample, AccumulatedSamplesTraceEveryPixelInTurn) {
     auto context = gl::createContext(gl::defaultBackend());
     const Scene scene = makeCornellBox();
-    const double oneSample = rmse(renderIndirect(scene, GiResolution::Half, 1).image,
+    const double oneSample = metrics::rmse(renderIndirect(scene, GiResolution::Half, 1).image,
                                   renderIndirect(scene, GiResolution::Full, 1).image);
-    const double fourSamples = rmse(renderIndirect(scene, GiResolution::Half, 4).image,
+    const double fourSamples = metrics::rmse(renderIndirect(scene, GiResolution::Half, 4).image,
                                     renderIndirect(scene, GiResolution::Full, 4).image);
     std::printf("[ upsample ] RMSE half against full: %.4f with 1 sample, %.4f with 4\n", oneSample, fourSamples);
     EXPECT_LT(fourSamples, 0.8 * oneSample);

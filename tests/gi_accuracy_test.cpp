@@ -13,6 +13,7 @@
 
 #include <glm/glm.hpp>
 
+#include "bench/reference_cache.hpp"
 #include "core/image.hpp"
 #include "metrics/region_ratio.hpp"
 #include "test_models.hpp"
@@ -28,13 +29,6 @@ constexpr double kCornellMean[2] = {0.8, 1.1}, kCornellCells[2] = {0.4, 1.35};
 constexpr double kSponzaMean[2] = {0.75, 1.0}, kSponzaCells[2] = {0.6, 1.3};
 constexpr double kFurnaceMeanTolerance = 0.05, kFurnaceLowTolerance = 0.1;  // of 1.5
 constexpr double kFurnaceBouncesTolerance = 0.08;  // of 1.75 and 1.875
-
-ImageF subtract(const ImageF& a, const ImageF& b) {
-    ImageF d = a;
-    for (std::size_t i = 0; i < d.rgba.size(); i += 4)
-        for (int c = 0; c < 3; ++c) d.rgba[i + c] = a.rgba[i + c] - b.rgba[i + c];
-    return d;
-}
 
 ImageF render(const std::filesystem::path& dir, const std::string& name, const std::string& options) {
     const auto out = dir / name;
@@ -56,7 +50,7 @@ IndirectPair indirectParts(const std::filesystem::path& dir, const std::string& 
     const test::CommandResult r = test::runVct("reference -q " + view + " --bounces 1 --spp " + std::to_string(spp) +
                                                " -o " + full.string() + " --direct-out " + referenceDirect.string());
     EXPECT_EQ(r.exitCode, 0) << r.output;
-    return {subtract(final, direct), subtract(readHdrImage(full), readHdrImage(referenceDirect))};
+    return {bench::subtractImages(final, direct), bench::subtractImages(readHdrImage(full), readHdrImage(referenceDirect))};
 }
 
 // Checks the image-wide ratio and every significant cell of a 3×3 grid against the bounds.
@@ -115,7 +109,7 @@ TEST(GiAccuracy, ClosedRoomBesideASunlitOneStaysDark) {
     const double litFloor = 0.8 / 3.14159265358979 * 10.0 / std::sqrt(0.09 + 1.0 + 0.04);  // ρ/π·E·cosθ
     const std::string view = "--scene " + model.string() + sun +
                              " --eye 1.5,0.7,0.03 --target 1.6,0.2,0.9 --fov 100 --width 96 --height 72";
-    const ImageF indirect = subtract(render(dir, "b_final", view), render(dir, "b_direct", view + " --aov direct"));
+    const ImageF indirect = bench::subtractImages(render(dir, "b_final", view), render(dir, "b_direct", view + " --aov direct"));
     double sum = 0.0, largest = 0.0;
     for (std::size_t i = 0; i < indirect.rgba.size(); i += 4) {
         const double l = (indirect.rgba[i] + indirect.rgba[i + 1] + indirect.rgba[i + 2]) / 3.0;
@@ -179,7 +173,7 @@ TEST(GiAccuracy, MoreBouncesFollowThePathTracerOnCornell) {
     const test::CommandResult r = test::runVct("reference -q " + view + " --spp 512 -o " + full.string() +
                                                " --direct-out " + referenceDirect.string());
     ASSERT_EQ(r.exitCode, 0) << r.output;
-    const IndirectPair parts{subtract(final, direct), subtract(readHdrImage(full), readHdrImage(referenceDirect))};
+    const IndirectPair parts{bench::subtractImages(final, direct), bench::subtractImages(readHdrImage(full), readHdrImage(referenceDirect))};
     expectIndirectWithin(parts, "Cornell 96x72, 2 bounces", kCornellMean[0], kCornellMean[1], kCornellCells[0],
                          kCornellCells[1]);
 }
@@ -206,7 +200,7 @@ TEST(GiAccuracy, PointLitCornellMatchesThePathTracer) {
     const double directRatio = directRegions.meanA / directRegions.meanB;
     std::printf("[ accuracy ] point-lit Cornell: direct %.4f× the path tracer's\n", directRatio);
     EXPECT_NEAR(directRatio, 1.0, 0.01);
-    const IndirectPair parts{subtract(render(dir, "final", view), direct), subtract(reference, referenceDirectImage)};
+    const IndirectPair parts{bench::subtractImages(render(dir, "final", view), direct), bench::subtractImages(reference, referenceDirectImage)};
     expectIndirectWithin(parts, "point-lit Cornell 96x72", kCornellMean[0], kCornellMean[1], kCornellCells[0],
                          kCornellCells[1]);
 }

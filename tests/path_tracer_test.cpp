@@ -33,9 +33,6 @@ ImageF renderReference(const std::string& arguments, const std::filesystem::path
     return readHdrImage(out);
 }
 
-double rmse(const ImageF& a, const ImageF& b) {
-    return metrics::rmse(a, b, metrics::allPixels(a.width, a.height));
-}
 
 double meanChannel(const ImageF& image, int c) {
     double sum = 0.0;
@@ -162,7 +159,7 @@ TEST(PathTracer, DoublingSamplesLowersRmseBySqrt2) {
         for (int seed = 1; seed <= 4; ++seed) {
             const ImageF image = renderReference(cornell + "--seed " + std::to_string(seed) + " --spp " +
                                                      std::to_string(spps[i]), dir / "x.pfm");
-            mse += std::pow(rmse(image, truth), 2.0) / 4.0;
+            mse += std::pow(metrics::rmse(image, truth), 2.0) / 4.0;
         }
         errors[i] = std::sqrt(mse);
     }
@@ -186,7 +183,7 @@ TEST(PathTracer, SameSeedAndAnyThreadCountGiveBitIdenticalImages) {
     EXPECT_TRUE(bitIdentical(first, again)) << "same seed twice";
     EXPECT_TRUE(bitIdentical(first, one)) << "--threads 1 vs 2";
     EXPECT_TRUE(bitIdentical(first, three)) << "--threads 3 vs 2";
-    EXPECT_GT(rmse(first, otherSeed), 0.0) << "the seed must change the noise";
+    EXPECT_GT(metrics::rmse(first, otherSeed), 0.0) << "the seed must change the noise";
     // The files themselves, byte for byte.
     std::ifstream fa(dir / "a.pfm", std::ios::binary), fc(dir / "c.pfm", std::ios::binary);
     const std::string bytesA((std::istreambuf_iterator<char>(fa)), {}), bytesC((std::istreambuf_iterator<char>(fc)), {});

@@ -5,20 +5,13 @@
 #include <set>
 
 #include "core/image.hpp"
+#include "metrics/image_metrics.hpp"
 #include "render/pixel_samples.hpp"
 #include "test_util.hpp"
 
 using namespace vct;
 
 namespace {
-
-double rmse(const ImageF& a, const ImageF& b) {
-    double sum = 0.0;
-    std::size_t n = 0;
-    for (std::size_t i = 0; i < a.rgba.size(); i += 4)
-        for (int c = 0; c < 3; ++c, ++n) sum += std::pow(double(a.rgba[i + c]) - double(b.rgba[i + c]), 2);
-    return std::sqrt(sum / double(n));
-}
 
 double mean(const ImageF& image) {
     double sum = 0.0;
@@ -70,7 +63,7 @@ TEST(PixelSamples, SixteenSamplesBringTheDirectLightToTheReferences) {
                                                    ".png --hdr-out " + out.string() + ".pfm");
         ASSERT_EQ(r.exitCode, 0) << r.output;
         const ImageF direct = readHdrImage(out.string() + ".pfm");
-        error[i] = rmse(direct, truth);
+        error[i] = metrics::rmse(direct, truth);
         ratio[i] = mean(direct) / mean(truth);
     }
     std::printf("[ samples  ] Cornell direct light against the reference: RMSE %.4f with 1 sample, %.4f with 16; "

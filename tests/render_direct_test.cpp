@@ -40,6 +40,13 @@ ImageF renderTopDown(const std::filesystem::path& model, const std::string& ligh
     return readHdrImage(out.string() + ".pfm");
 }
 
+// The floor's x under the centre of pixel column x of renderTopDown's view (4 m above, 60° field):
+// the same pinhole the renderer uses.
+double floorXAtColumn(int x) {
+    const double halfExtent = 4.0 * std::tan(glm::radians(30.0));
+    return ((x + 0.5) / 96.0 * 2.0 - 1.0) * halfExtent;
+}
+
 }  // namespace
 
 TEST(DirectLighting, SunOnPlaneMatchesLambert) {
@@ -74,11 +81,9 @@ TEST(DirectLighting, SpotOnPlaneMatchesInverseSquareAndFalloff) {
     // Directly below: E = I / h².
     EXPECT_NEAR(windowMean(image, 48, 48, 1, 1), 0.8 / glm::pi<double>() * I / (height * height), 0.01 * 0.8 / glm::pi<double>() * I / 4);
     // Off axis, in the falloff band: check every pixel along the row against the closed form.
-    // Pixel centre → world point on the plane through the same pinhole the renderer uses.
-    const double halfExtent = 4.0 * std::tan(glm::radians(30.0));
     int checked = 0;
     for (int x = 48; x < 96; ++x) {
-        const double px = ((x + 0.5) / 96.0 * 2.0 - 1.0) * halfExtent;
+        const double px = floorXAtColumn(x);
         const double d2 = px * px + height * height;
         const double cosAngle = height / std::sqrt(d2);
         const double E = I * spotFalloff(cosAngle, inner, outer) * cosAngle / d2;
@@ -102,10 +107,9 @@ TEST(DirectLighting, PointLightOnPlaneMatchesInverseSquareAcrossItsCubeFaces) {
     const auto model = obj.write(dir);
     const double I = 5.0, height = 2.0;
     const ImageF image = renderTopDown(model, "--point-pos 0,2,0 --point-intensity 5");
-    const double halfExtent = 4.0 * std::tan(glm::radians(30.0));
     int checked = 0, beyondSeam = 0;
     for (int x = 0; x < 96; ++x) {
-        const double px = ((x + 0.5) / 96.0 * 2.0 - 1.0) * halfExtent;
+        const double px = floorXAtColumn(x);
         const double d2 = px * px + height * height;
         const double E = I * (height / std::sqrt(d2)) / d2;  // I·cosθ/d²
         const double expected = 0.8 / glm::pi<double>() * E;

@@ -61,6 +61,14 @@ Scene loadSceneFromOptions(const SceneOptions& o) {
     }
     const glm::dvec3 color = o.lightColor.empty() ? glm::dvec3(1.0) : toVec3(o.lightColor, "--light-color");
     std::vector<Light> lights;
+    // Each light starts from the scene's own light of its type (or a default one) and is checked
+    // and tinted alike.
+    auto add = [&](Light light, const char* what) {
+        light.color = color;
+        validateLight(light, what);
+        if (light.type != LightType::Point) light.direction = glm::normalize(light.direction);
+        lights.push_back(light);
+    };
     if (sun) {
         const Light* own = firstOfType(scene.lights, LightType::Directional);
         Light light = own ? *own : Light{};
@@ -68,10 +76,7 @@ Scene loadSceneFromOptions(const SceneOptions& o) {
         if (!own) light.direction = glm::normalize(glm::dvec3(-0.3, -1.0, -0.2));
         if (!o.sunDirection.empty()) light.direction = toVec3(o.sunDirection, "--sun-dir");
         if (o.sunIrradiance) light.irradiance = *o.sunIrradiance;
-        light.color = color;
-        validateLight(light, "the sun given on the command line");
-        light.direction = glm::normalize(light.direction);
-        lights.push_back(light);
+        add(light, "the sun given on the command line");
     }
     if (spot) {
         const Light* own = firstOfType(scene.lights, LightType::Spot);
@@ -86,10 +91,7 @@ Scene loadSceneFromOptions(const SceneOptions& o) {
             light.innerAngleDeg = o.spotAngles[0];
             light.outerAngleDeg = o.spotAngles[1];
         }
-        light.color = color;
-        validateLight(light, "the spot light given on the command line");
-        light.direction = glm::normalize(light.direction);
-        lights.push_back(light);
+        add(light, "the spot light given on the command line");
     }
     if (point) {
         const Light* own = firstOfType(scene.lights, LightType::Point);
@@ -99,9 +101,7 @@ Scene loadSceneFromOptions(const SceneOptions& o) {
         if (!own) light.position = scene.worldBounds.centre() + glm::dvec3(0.0, 0.25 * scene.worldBounds.size().y, 0.0);
         if (!o.pointPosition.empty()) light.position = toVec3(o.pointPosition, "--point-pos");
         if (o.pointIntensity) light.intensity = *o.pointIntensity;
-        light.color = color;
-        validateLight(light, "the point light given on the command line");
-        lights.push_back(light);
+        add(light, "the point light given on the command line");
     }
     scene.lights = lights;
     return scene;

@@ -54,6 +54,8 @@ double rmse(const ImageF& a, const ImageF& b, const PixelMask& mask) {
     return std::sqrt(sum / (3.0 * double(mask.countedPixels)));
 }
 
+double rmse(const ImageF& a, const ImageF& b) { return rmse(a, b, allPixels(a.width, a.height)); }
+
 double relativeMse(const ImageF& a, const ImageF& b, const PixelMask& mask) {
     double sum = 0.0;
     for (int y = 0; y < a.height; ++y)

@@ -48,6 +48,7 @@ ImageMetrics compareImages(const ImageF& a, const ImageF& b, const PixelMask& ma
 
 // The parts, for tests and other tools.
 double rmse(const ImageF& a, const ImageF& b, const PixelMask& mask);
+double rmse(const ImageF& a, const ImageF& b);  // over every pixel
 double relativeMse(const ImageF& a, const ImageF& b, const PixelMask& mask);
 // Signed per-pixel relative luminance error (Y(a) − Y(b)) / max(Y(b), floor), floor as above;
 // 0 outside the mask.

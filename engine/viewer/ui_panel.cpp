@@ -172,17 +172,17 @@ bool comboOf(const char* label, int& index, const char* const items[], int count
     return ImGui::Combo(label, &index, items, count);
 }
 
-// A map resolution from a list of powers of two; a value from the command line that is not in the
-// list shows empty until one is picked.
-// 0 stands for "follow the voxels" (the photons' default).
-bool resolutionCombo(const char* label, int& value) {
+// A map resolution from a list of powers of two, with `withAuto` also 0: "auto", follow the voxels
+// (the photons' default). A value from the command line that is not in the list shows empty until
+// one is picked.
+bool resolutionCombo(const char* label, int& value, bool withAuto) {
     static const int resolutions[] = {0, 256, 512, 1024, 2048, 4096, 8192};
     static const char* const names[] = {"auto", "256", "512", "1024", "2048", "4096", "8192"};
-    constexpr int count = 7;
-    int index = int(std::find(std::begin(resolutions), std::end(resolutions), value) - std::begin(resolutions));
+    const int first = withAuto ? 0 : 1, count = 7 - first;
+    int index = int(std::find(std::begin(resolutions) + first, std::end(resolutions), value) - std::begin(resolutions)) - first;
     if (index == count) index = -1;
-    if (!comboOf(label, index, names, count)) return false;
-    value = resolutions[index];
+    if (!comboOf(label, index, names + first, count)) return false;
+    value = resolutions[first + index];
     return true;
 }
 
@@ -251,9 +251,8 @@ void settingsSection(ViewerState& state, bool& changed) {
     changed |= ImGui::SliderFloat("offset (voxels)", &s.cones.offset, 0.0f, 16.0f, "%.2f", ImGuiSliderFlags_AlwaysClamp);
     changed |= ImGui::SliderFloat("lift", &s.cones.lift, 0.0f, 4.0f, "%.2f", ImGuiSliderFlags_AlwaysClamp);
     changed |= ImGui::SliderInt("PCF radius", &s.pcfRadius, 0, 8, "%d", ImGuiSliderFlags_AlwaysClamp);
-    changed |= resolutionCombo("light-view map (photons)", s.lightViewResolution);
-    changed |= resolutionCombo("shadow map", s.shadowMapResolution);
-    if (s.shadowMapResolution == 0) s.shadowMapResolution = 4096;  // "auto" means nothing for the shadow map
+    changed |= resolutionCombo("light-view map (photons)", s.lightViewResolution, true);
+    changed |= resolutionCombo("shadow map", s.shadowMapResolution, false);
 }
 
 }  // namespace
