@@ -5,7 +5,8 @@ layout(local_size_x = 64) in;
 // are bit-identical whatever the order in which thousands of fragments of one cell arrive.
 //   albedo: 8-bit channels summed in 32 bits (exact up to 16.8 M fragments per cell)
 //   normal: components × 127 summed as two's-complement 32-bit integers
-//   area, emission, and (in uProjectedArea) the area projected along x, y, z (area·|n_a|):
+//   area, emission, and (in uProjectedArea) the area projected along x, y, z (area·|n_a|; along
+//   the axis the triangle was projected on, the coverage of its column, voxelize.frag):
 //   64-bit fixed point (low word, then a carry into the high word)
 #include "voxel_common.glsl"
 #include "octree.glsl"
@@ -47,6 +48,8 @@ void main() {
     imageAtomicAdd(uAccumulators, base + 6, uint(normal.z));
     add64(base + 7, uint(round(area * AREA_SCALE)));
     vec3 projected = area * abs(unpackNormal(fragment.z));
+    uint column = fragment.y >> 24;
+    projected[columnAxis(column)] = max(projected[columnAxis(column)], columnCoverage(column));
     for (int c = 0; c < 3; ++c) {
         uint value = uint(round(projected[c] * AREA_SCALE));
         int index = int(cell) * PROJECTED_AREA_FIELDS + 2 * c;

@@ -13,6 +13,14 @@ float opticalDepth(float alpha) { return -log(1.0 - min(alpha, MAX_OPACITY)); }
 float opacityOver(float tau, float length) { return 1.0 - exp(-tau * length); }
 
 // Octahedral encoding of a unit vector into two 16-bit snorm values.
+// A fragment's column coverage (voxelize.frag): the projection axis (2 bits) and the share of the
+// pixel square the triangle covers (6 bits), in one byte.
+uint packColumnCoverage(int axis, float coverage) {
+    return uint(axis) | (uint(round(clamp(coverage, 0.0, 1.0) * 63.0)) << 2);
+}
+int columnAxis(uint bits) { return int(bits & 3u); }
+float columnCoverage(uint bits) { return float(bits >> 2) / 63.0; }
+
 uint packNormal(vec3 n) {
     n /= max(abs(n.x) + abs(n.y) + abs(n.z), 1e-30);
     vec2 e = n.z >= 0.0 ? n.xy : (1.0 - abs(n.yx)) * vec2(n.x >= 0.0 ? 1.0 : -1.0, n.y >= 0.0 ? 1.0 : -1.0);

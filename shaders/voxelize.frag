@@ -3,7 +3,13 @@
 // triangle to the pixel's square exactly, find the depth range it spans there, and append one
 // voxel fragment per cell of that range (closed cells: touching a cell's face counts, so the set
 // contains every cell the triangle touches). Each fragment carries the surface area the triangle
-// has inside its cell (the column's share, split along depth in proportion to the overlap).
+// has inside its cell: the column's share, split along depth in proportion to the overlap; a
+// triangle flat on a cell face (no depth range) gives all of it to the cell its plane starts,
+// the other keeping an empty fragment (occupied, nothing in it), so that it stays one layer
+// thick. A triangle crossing cells in depth also gives each of them the coverage of the whole
+// column, as what it blocks along the projection axis: a ray along the column meets the
+// triangle in one of those cells, whichever, where with the area split between two cells each
+// would let half through, a quarter in all (a tilted wall, a vault, would leak light).
 #include "material.glsl"
 #include "voxel_common.glsl"
 
@@ -21,8 +27,9 @@ flat in vec3 gColor2;
 flat in vec3 gFaceNormal;
 
 layout(std430, binding = SSBO_FRAGMENT_COUNTER) buffer FragmentCounter { uint fragmentCount; };
-// Per fragment: cell, texture × vertex colour RGBA8 (the material's colour factor and emission are applied
-// by svo_leaves), the triangle's normal (octahedral), material index << 16 | area (half float).
+// Per fragment: cell, texture × vertex colour RGB8 with the column coverage in the top byte
+// (packColumnCoverage; the material's colour factor and emission are applied by svo_leaves), the
+// triangle's normal (octahedral), material index << 16 | area (half float).
 layout(rgba32ui, binding = IMAGE_FRAGMENTS) uniform writeonly uimageBuffer uFragments;
 
 uniform uint uCapacity;
@@ -156,12 +163,16 @@ void main() {
     int first = max(int(ceil(wLow - kEps)) - 1, 0);
     int last = min(int(floor(wHigh + kEps)), uResolution - 1);
     float span = wHigh - wLow;
-    uint albedo = packUnorm4x8(vec4(clamp(base.rgb, 0.0, 1.0), 1.0));
+    int planeCell = clamp(int(floor(0.5 * (wLow + wHigh))), first, last);
+    uint colour = packUnorm4x8(vec4(clamp(base.rgb, 0.0, 1.0), 0.0)) & 0xFFFFFFu;
     uint packedNormal = packNormal(gFaceNormal);
     for (int k = first; k <= last; ++k) {
         float share = span > 1e-6 ? max(min(wHigh, float(k + 1)) - max(wLow, float(k)), 0.0) / span
-                                  : 1.0 / float(last - first + 1);
+                                  : (k == planeCell ? 1.0 : 0.0);
         float area = coverage * gAreaScale * share;
+        // Within one cell (or flat in one) the area already says what the cell blocks.
+        float columnCoverage = span > 1e-6 && last > first ? coverage : 0.0;
+        uint albedo = colour | (packColumnCoverage(gAxis, columnCoverage) << 24);
         uvec3 cell = unproject(uvec3(uvec2(pixel), uint(k)), gAxis);
         uint index = atomicAdd(fragmentCount, 1u);
         if (index < uCapacity) {

@@ -1,10 +1,12 @@
 // Slab bricks (engine/voxel/brick_layout.hpp, "Slabs"): the GPU opacity slabs against the CPU
-// reference (tests/reference/cpu_slabs.*), and the three properties the slabs exist for: a
-// one-voxel wall stays opaque along its normal at every level, a pillar covering a quarter of a
-// slab passes three quarters of the light, and the dark side of a lit wall looks dark.
+// reference (tests/reference/cpu_slabs.*), and the properties the slabs exist for: a one-voxel
+// wall stays opaque along its normal at every level (and its cells block every ray across it,
+// also where it lies on a cell face or crosses two cells), a pillar covering a quarter of a slab
+// passes three quarters of the light, and the dark side of a lit wall looks dark.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <map>
 #include <memory>
 
 #include <glm/gtc/constants.hpp>
@@ -201,6 +203,58 @@ TEST(Slabs, OneVoxelWallStaysOpaqueAlongItsNormalAtEveryLevel) {
                     level, h, checked, worstAlong, worstAcross);
     }
     checkSlabOpacity(gpu, "wall");
+}
+
+// Transmittance along x of every row of cells (y, z) with 2 ≤ y, z ≤ 61 (rows the walls below
+// cross in full): the product of (1 − α_x) over the row's cells; and the most cells of one row
+// with α_x > 0.
+struct RowTransmittance {
+    double largest = 0.0;
+    int thickest = 0;
+    std::size_t rows = 0;
+};
+RowTransmittance rowTransmittanceAlongX(const GpuOctreeData& gpu) {
+    std::map<std::pair<unsigned, unsigned>, std::pair<double, int>> rows;  // (y, z) → (T, cells with α_x > 0)
+    for (const auto& [packed, alpha] : cellOpacityOf(gpu)) {
+        const glm::uvec3 c = unpackCell(packed);
+        if (c.y < 2 || c.y > 61 || c.z < 2 || c.z > 61) continue;
+        auto& row = rows.try_emplace({c.y, c.z}, 1.0, 0).first->second;
+        row.first *= 1.0 - alpha.x;
+        row.second += alpha.x > 0.0 ? 1 : 0;
+    }
+    RowTransmittance result;
+    for (const auto& [yz, row] : rows) {
+        result.largest = std::max(result.largest, row.first);
+        result.thickest = std::max(result.thickest, row.second);
+        ++result.rows;
+    }
+    return result;
+}
+
+TEST(Slabs, WallsOnACellFaceOrAcrossCellsBlockEveryRow) {
+    // A ray along a row of cells crosses a wall once, in one of the cells the wall passes
+    // through: the row must be opaque along x (the cells hold α_x = 1 at 8 bits: T ≤ 0.01). A
+    // wall lying on the cell face x = 37 stays one layer thick; a tilted wall crossing two cells
+    // of a row blocks it in both (split by area, each would pass half: T = 0.25).
+    struct Wall {
+        const char* name;
+        double x0, slope;  // the plane x = x0 + slope·y
+        int thickest;      // most cells of a row that may block
+    };
+    for (const Wall& wall : {Wall{"on the cell face x = 37", 37.0, 0.0, 1}, Wall{"tilted, x = 20.1 + 0.3y", 20.1, 0.3, 2}}) {
+        VoxelScene v{kWallLevels};
+        const double lo = 0.25, hi = 63.75;
+        auto x = [&](double y) { return wall.x0 + wall.slope * y; };
+        v.quad({x(lo), lo, lo}, {x(hi), hi, lo}, {x(hi), hi, hi}, {x(lo), lo, hi});
+        const Scene scene = v.scene();
+        SvoHarness harness(scene);
+        const RowTransmittance t = rowTransmittanceAlongX(harness.build(kWallLevels));
+        std::printf("[ slabs    ] wall %s: %zu rows, T along x ≤ %.4f, at most %d blocking cells per row\n", wall.name,
+                    t.rows, t.largest, t.thickest);
+        EXPECT_EQ(t.rows, 60u * 60u) << wall.name;
+        EXPECT_LE(t.largest, 0.01) << wall.name;
+        EXPECT_LE(t.thickest, wall.thickest) << wall.name;
+    }
 }
 
 TEST(Slabs, QuarterCoveredNodeTransmitsThreeQuarters) {
