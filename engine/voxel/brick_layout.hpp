@@ -8,7 +8,10 @@
 // Cells and values. The finest voxels ("cells") are unit cubes [c, c+1)³ of voxel space. An
 // occupied cell has albedo ρ (mean of its fragments) and opacity α = min(1, A) where A is the
 // surface area inside it in voxel-face units (a plane straight through a cell has A = 1), and
-// opacity along each axis α_a = min(1, A_a), A_a the area projected along a. The albedo bricks
+// opacity along each axis α_a = min(1, A_a), A_a the area projected along a, except that along a
+// triangle's projection axis a cell the triangle crosses in depth with others of its pixel column
+// counts the column's whole coverage (voxelize.frag: a ray along the column meets the triangle in
+// one of them; its area split among them would let light through). The albedo bricks
 // filter optical depth τ = −ln(1 − min(α, 0.999)) (per voxel length) weighted: V(c) = (ρ·τ, τ).
 // Empty cells have V = 0.
 //
