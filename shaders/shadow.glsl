@@ -6,6 +6,13 @@ uniform float uShadowTexelSize;      // texel edge in metres (directional) or at
 uniform int uShadowPerspective;
 uniform int uPcfRadius;              // taps per side = 2r + 1
 
+// Pair `pair` (0..r) of the PCF filter along one axis (shadowVisibility): the offset of its
+// bilinear comparison from the pair's first texel, and its weight.
+vec2 shadowTapPair(int pair, int radius, float f) {
+    float a = pair == 0 ? 1.0 - f : 1.0, b = pair == radius ? f : 1.0;
+    return vec2(b / (a + b), a + b);
+}
+
 // Fraction of the light that reaches `p` (0 = fully shadowed). The point is pushed off the
 // surface along its normal and towards the light by about a texel: that removes acne without a
 // depth bias tuned per scene, and it scales with the texel, so it works at any scene scale.
@@ -21,11 +28,23 @@ float shadowVisibility(vec3 p, vec3 n, vec3 toLight, float distanceToLight) {
     vec3 ndc = clip.xyz / clip.w;
     vec2 uv = ndc.xy * 0.5 + 0.5;
     if (any(lessThan(uv, vec2(0.0))) || any(greaterThan(uv, vec2(1.0)))) return 1.0;
-    vec2 step = 1.0 / vec2(textureSize(uShadowMap, 0));
+    // The filter: (2r + 1)² bilinear comparisons one texel apart, a box of 2r + 1 texels blurred
+    // by the bilinear tent. Per axis that weighs the 2r + 2 texels around the point 1 − f, 1, …,
+    // 1, f (f the point's fraction between texel centres); taken in pairs of neighbouring texels,
+    // each pair is one bilinear comparison placed between them in proportion to their weights, so
+    // (r + 1)² lookups give the same filter as (2r + 1)².
+    vec2 size = vec2(textureSize(uShadowMap, 0));
+    vec2 texelPoint = uv * size - 0.5;  // texel centres at integers
+    vec2 first = floor(texelPoint) - float(uPcfRadius), f = texelPoint - floor(texelPoint);
     float lit = 0.0;
-    for (int y = -uPcfRadius; y <= uPcfRadius; ++y)
-        for (int x = -uPcfRadius; x <= uPcfRadius; ++x)
-            lit += texture(uShadowMap, vec3(uv + vec2(x, y) * step, ndc.z));
+    for (int y = 0; y <= uPcfRadius; ++y) {
+        vec2 yPair = shadowTapPair(y, uPcfRadius, f.y);
+        for (int x = 0; x <= uPcfRadius; ++x) {
+            vec2 xPair = shadowTapPair(x, uPcfRadius, f.x);
+            vec2 at = first + 2.0 * vec2(x, y) + vec2(xPair.x, yPair.x);
+            lit += xPair.y * yPair.y * texture(uShadowMap, vec3((at + 0.5) / size, ndc.z));
+        }
+    }
     float taps = float((2 * uPcfRadius + 1) * (2 * uPcfRadius + 1));
     return lit / taps;
 }
