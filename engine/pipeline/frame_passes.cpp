@@ -195,7 +195,7 @@ const PassTable kFramePasses = {{
      [](FrameResources& f, const FrameView&) { f.svo->bricksMip(); }},
     {Pass::LightView, "light_view", Stage::Light,
      {I::Geometry, I::Materials, I::Lights, I::ShadowSettings}, {}, {R::LightViewMaps}, unlessLightViews,
-     "scene.vert, light_view.frag",
+     "scene.vert, light_view.frag, shadow_depth.frag",
      [](FrameResources& f, const FrameView&) { renderLightViews(f); }},
     {Pass::Inject, "inject", Stage::Radiance,
      {I::PhotonSettings}, {R::LightViewMaps, R::CellValues}, {R::CellRadiance}, unlessRadiance,

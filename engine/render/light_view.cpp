@@ -58,8 +58,9 @@ LightViewMap::LightViewMap(int resolution, int shadowResolution)
     }
 }
 
-gl::Program lightViewProgram() {
-    return gl::buildProgram({{GL_VERTEX_SHADER, "scene.vert"}, {GL_FRAGMENT_SHADER, "light_view.frag"}});
+LightViewPrograms lightViewPrograms() {
+    return {gl::buildProgram({{GL_VERTEX_SHADER, "scene.vert"}, {GL_FRAGMENT_SHADER, "light_view.frag"}}),
+            gl::buildProgram({{GL_VERTEX_SHADER, "scene.vert"}, {GL_FRAGMENT_SHADER, "shadow_depth.frag"}})};
 }
 
 int lightViewCount(const Light& light) { return light.type == LightType::Point ? kCubeFaces : 1; }
@@ -73,8 +74,8 @@ std::size_t LightViewMap::bytes() const {
     return std::size_t(resolution_) * resolution_ * (4 + 16 + 8 + 16) + shadow;
 }
 
-void LightViewMap::render(const gl::Program& program, const GpuScene& gpuScene, const Scene& scene, const Light& light,
-                          int face) {
+void LightViewMap::render(const LightViewPrograms& programs, const GpuScene& gpuScene, const Scene& scene,
+                          const Light& light, int face) {
     // Every light reaches the GPU through here (Renderer::setLights validates too, a Scene's own
     // lights are not validated before): nothing non-finite or out of float's range is drawn.
     validateLight(light, "light");
@@ -84,7 +85,7 @@ void LightViewMap::render(const gl::Program& program, const GpuScene& gpuScene, 
     const float zero[4] = {0, 0, 0, 0};
     for (int i = 0; i < 3; ++i) glClearNamedFramebufferfv(framebuffer_.id(), GL_COLOR, i, zero);
     glClearNamedFramebufferfv(framebuffer_.id(), GL_DEPTH, 0, zero);  // reversed depth: far = 0
-    const GLuint p = program.id();
+    const GLuint p = programs.photons.id();
     glUseProgram(p);
     gl::setUniform(p, "uViewProjection", transform_.view.viewProjection);
     gl::setUniform(p, "uInverseQuantity",
@@ -92,10 +93,13 @@ void LightViewMap::render(const gl::Program& program, const GpuScene& gpuScene, 
     setLightUniforms(p, light, scene, face);
     gpuScene.draw(p);
     if (shadowDepth_.id()) {
-        // Depth only: the same program (its alpha test cuts the same holes), no colour targets.
+        // Depth only, no colour targets; the same view and the same alpha test.
         gl::beginRasterPass({shadowFramebuffer_.id(), shadowResolution_, shadowResolution_, true});
         glClearNamedFramebufferfv(shadowFramebuffer_.id(), GL_DEPTH, 0, zero);
-        gpuScene.draw(p);
+        const GLuint depthOnly = programs.shadowDepth.id();
+        glUseProgram(depthOnly);
+        gl::setUniform(depthOnly, "uViewProjection", transform_.view.viewProjection);
+        gpuScene.draw(depthOnly);
     }
     gl::endRasterPass();
 }

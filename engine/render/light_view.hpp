@@ -18,9 +18,9 @@ class LightViewMap {
 public:
     LightViewMap(int photonResolution, int shadowResolution);
     // `face`: which cube face of a point light this map shows (0 for the other lights).
-    // `program`: scene.vert + light_view.frag (lightViewProgram), shared by every map.
-    void render(const gl::Program& program, const GpuScene& gpuScene, const Scene& scene, const Light& light,
-                int face = 0);
+    // `programs`: lightViewPrograms(), shared by every map.
+    void render(const struct LightViewPrograms& programs, const GpuScene& gpuScene, const Scene& scene,
+                const Light& light, int face = 0);
 
     // DEPTH32F, compare mode GL_GEQUAL, shadowResolution() texels per side.
     GLuint shadowMap() const { return shadowDepth_.id() ? shadowDepth_.id() : depth_.id(); }
@@ -49,8 +49,13 @@ private:
     LightViewTransform transform_;
 };
 
-// The program every light-view map is drawn with.
-gl::Program lightViewProgram();
+// The programs every light-view map is drawn with: the photons (scene.vert + light_view.frag)
+// and the finer shadow map's depth-only draw (scene.vert + shadow_depth.frag, which only runs
+// the alpha test).
+struct LightViewPrograms {
+    gl::Program photons, shadowDepth;
+};
+LightViewPrograms lightViewPrograms();
 
 // How many maps a light needs: six for a point light (a cube), one for the others.
 int lightViewCount(const Light& light);

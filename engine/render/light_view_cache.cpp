@@ -16,7 +16,7 @@ std::uint32_t LightViewCache::update(const GpuScene& gpuScene, const Scene& scen
         renderedFor_.assign(lights.size(), std::nullopt);
         key_ = key;
     }
-    if (!program_.id()) program_ = lightViewProgram();
+    if (!programs_.photons.id()) programs_ = lightViewPrograms();
     std::uint32_t rendered = 0;
     for (std::size_t i = 0; i < lights.size(); ++i) {
         if (renderedFor_[i] == lights[i]) continue;
@@ -27,7 +27,7 @@ std::uint32_t LightViewCache::update(const GpuScene& gpuScene, const Scene& scen
             maps.clear();
             for (int face = 0; face < count; ++face) maps.emplace_back(key.resolution, key.shadowResolution);
         }
-        for (int face = 0; face < count; ++face) maps[face].render(program_, gpuScene, scene, lights[i], face);
+        for (int face = 0; face < count; ++face) maps[face].render(programs_, gpuScene, scene, lights[i], face);
         renderedFor_[i] = lights[i];
         rendered += std::uint32_t(count);
     }

@@ -25,7 +25,7 @@ public:
     void clear();
 
 private:
-    gl::Program program_;  // made on first use
+    LightViewPrograms programs_;  // made on first use
     LightViewSets views_;
     std::vector<std::optional<Light>> renderedFor_;  // the light each set of maps shows
     std::optional<Key> key_;
