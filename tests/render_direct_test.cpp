@@ -1,10 +1,14 @@
 // Direct lighting in physical units through the real `vct render` command: a Lambertian plane
 // under a sun or a spot must show L = ρ/π · E · cosθ in the linear HDR output.
 #include <cmath>
+#include <cstdint>
 #include <fstream>
+#include <string>
+#include <vector>
 
 #include <glm/gtc/constants.hpp>
 #include <nlohmann/json.hpp>
+#include <stb_image_write.h>  // implementation in libstb
 
 #include "core/image.hpp"
 #include "gl/context.hpp"
@@ -179,6 +183,40 @@ TEST(DirectLighting, FinerShadowMapSharpensTheShadowEdge) {
     EXPECT_GE(coarse.penumbraSteps, 10);
     EXPECT_LE(fine.penumbraSteps, 4);
     EXPECT_NEAR(fine.halfLightZ, 0.5, 0.03);
+}
+
+TEST(DirectLighting, AlphaMaskedHolesLetTheSunThroughEitherShadowMap) {
+    // A quad 1 m above the floor whose texture is transparent on its left half (x < 0): the sun
+    // straight down lights the floor under that half and not under the other, whether the shadow
+    // map is the photons' map or a finer one of its own (drawn depth only, masked materials apart).
+    const auto dir = test::testDir();
+    std::vector<std::uint8_t> texels(16 * 16 * 4, 255);
+    for (int y = 0; y < 16; ++y)
+        for (int x = 0; x < 8; ++x) texels[std::size_t(y * 16 + x) * 4 + 3] = 0;
+    ASSERT_NE(stbi_write_png((dir / "mask.png").c_str(), 16, 16, 4, texels.data(), 16 * 4), 0);
+    std::ofstream(dir / "masked.mtl") << "newmtl white\nKd 0.6 0.6 0.6\nnewmtl leaf\nKd 0.6 0.6 0.6\nmap_Kd mask.png\n";
+    std::ofstream(dir / "masked.obj") << "mtllib masked.mtl\n"
+                                         "v -3 0 -3\nv 3 0 -3\nv 3 0 3\nv -3 0 3\n"
+                                         "v -0.5 1 -0.5\nv 0.5 1 -0.5\nv 0.5 1 0.5\nv -0.5 1 0.5\n"
+                                         "vt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\n"
+                                         "usemtl white\nf 1 4 3 2\n"
+                                         "usemtl leaf\nf 5/4 8/1 7/2 6/3\n";
+    const double lit = 0.6 / glm::pi<double>() * 3.0;
+    for (const std::string resolutions : {"--light-view-res 256 --shadow-res 256", "--light-view-res 64 --shadow-res 1024"}) {
+        const auto out = dir / "masked";
+        const auto result = test::runVct("render -q --scene " + (dir / "masked.obj").string() +
+                                         " --gi off --eye 0,2.5,3.5 --target 0,0,0 --fov 50 --width 128 --height 96"
+                                         " --sun-dir 0,-1,0 --sun-irradiance 3 --aov direct " + resolutions +
+                                         " --hdr-out " + out.string() + ".pfm --out " + out.string() + ".png");
+        ASSERT_EQ(result.exitCode, 0) << result.output;
+        const ImageF image = readHdrImage(out.string() + ".pfm");
+        const glm::ivec2 underHole = slabScenePixel({-0.25, 0.0, 0.2}), underLeaf = slabScenePixel({0.25, 0.0, 0.45});
+        const double hole = image.at(underHole.x, underHole.y)[0] / lit, leaf = image.at(underLeaf.x, underLeaf.y)[0] / lit;
+        std::printf("[ shadow   ] %s: floor under the mask's hole %.3f, under its opaque half %.3f of the lit floor\n",
+                    resolutions.c_str(), hole, leaf);
+        EXPECT_NEAR(hole, 1.0, 0.02) << resolutions;
+        EXPECT_LT(leaf, 0.02) << resolutions;
+    }
 }
 
 TEST(DirectLighting, BoxCastsAShadowOnTheFloor) {

@@ -154,11 +154,13 @@ float GpuScene::maxEmission() const {
     return m;
 }
 
-void GpuScene::draw(GLuint program) const {
+void GpuScene::draw(GLuint program, Materials which) const {
     glBindVertexArray(vertexArray_.id());
     for (std::size_t r = 0; r < ranges_.size(); ++r) {
         const DrawRange& range = ranges_[r];
         const GpuMaterial& m = materials_[range.material];
+        const bool masked = m.alphaCutoff >= 0.0f;
+        if ((which == Materials::Opaque && masked) || (which == Materials::Masked && !masked)) continue;
         gl::setUniform(program, "uVertexColors", rangeHasVertexColors_[r] ? 1 : 0);
         gl::setUniform(program, "uMaterialIndex", int(range.material));
         gl::setUniform(program, "uBaseColor", glm::vec4(m.baseColor, m.baseAlpha));

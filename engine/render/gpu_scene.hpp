@@ -20,9 +20,14 @@ class GpuScene {
 public:
     explicit GpuScene(const Scene& scene);
 
-    // Draws every triangle with `program` bound; sets its material uniforms (shaders/
-    // material.glsl) and binds the base-colour texture at gl::TEXTURE_BASE_COLOR.
-    void draw(GLuint program) const;
+    // Which materials' triangles draw() draws: all, only the opaque ones, or only those with an
+    // alpha mask (a depth-only pass draws the opaque ones with no fragment shader at all, which
+    // rasterizers run much faster than a fragment shader that may discard).
+    enum class Materials { All, Opaque, Masked };
+
+    // Draws the triangles of `which` materials with `program` bound; sets its material uniforms
+    // (shaders/material.glsl) and binds the base-colour texture at gl::TEXTURE_BASE_COLOR.
+    void draw(GLuint program, Materials which = Materials::All) const;
 
     std::size_t bytes() const { return bytes_; }
 

@@ -1,6 +1,7 @@
 #include "render/light_view.hpp"
 
 #include <algorithm>
+#include <utility>
 
 #include "core/error.hpp"
 #include "gl/raster_state.hpp"
@@ -60,6 +61,7 @@ LightViewMap::LightViewMap(int resolution, int shadowResolution)
 
 LightViewPrograms lightViewPrograms() {
     return {gl::buildProgram({{GL_VERTEX_SHADER, "scene.vert"}, {GL_FRAGMENT_SHADER, "light_view.frag"}}),
+            gl::buildProgram({{GL_VERTEX_SHADER, "scene.vert"}}),
             gl::buildProgram({{GL_VERTEX_SHADER, "scene.vert"}, {GL_FRAGMENT_SHADER, "shadow_depth.frag"}})};
 }
 
@@ -96,10 +98,13 @@ void LightViewMap::render(const LightViewPrograms& programs, const GpuScene& gpu
         // Depth only, no colour targets; the same view and the same alpha test.
         gl::beginRasterPass({shadowFramebuffer_.id(), shadowResolution_, shadowResolution_, true});
         glClearNamedFramebufferfv(shadowFramebuffer_.id(), GL_DEPTH, 0, zero);
-        const GLuint depthOnly = programs.shadowDepth.id();
-        glUseProgram(depthOnly);
-        gl::setUniform(depthOnly, "uViewProjection", transform_.view.viewProjection);
-        gpuScene.draw(depthOnly);
+        const std::pair<const gl::Program*, GpuScene::Materials> draws[2] = {
+            {&programs.shadowOpaque, GpuScene::Materials::Opaque}, {&programs.shadowMasked, GpuScene::Materials::Masked}};
+        for (const auto& [program, materials] : draws) {
+            glUseProgram(program->id());
+            gl::setUniform(program->id(), "uViewProjection", transform_.view.viewProjection);
+            gpuScene.draw(program->id(), materials);
+        }
     }
     gl::endRasterPass();
 }

@@ -50,10 +50,10 @@ private:
 };
 
 // The programs every light-view map is drawn with: the photons (scene.vert + light_view.frag)
-// and the finer shadow map's depth-only draw (scene.vert + shadow_depth.frag, which only runs
-// the alpha test).
+// and the finer shadow map's depth-only draw: opaque materials with no fragment shader (the
+// rasterizer's depth alone), masked ones with shadow_depth.frag, which only runs the alpha test.
 struct LightViewPrograms {
-    gl::Program photons, shadowDepth;
+    gl::Program photons, shadowOpaque, shadowMasked;
 };
 LightViewPrograms lightViewPrograms();
 
