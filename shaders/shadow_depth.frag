@@ -1,13 +1,13 @@
 #version 450
-// Shadow-map depth (LightViewMap's depth-only draw): the rasterizer writes the depth, and the
-// only thing left to the fragment is the alpha test of masked materials, which must cut the same
-// holes as in the light-view map. Nothing is written, and opaque materials look nothing up.
+// Shadow-map depth of masked materials (LightViewMap's depth-only draw; opaque materials are
+// drawn with no fragment shader at all): the rasterizer writes the depth, and the only thing left
+// to the fragment is the alpha test, which must cut the same holes as in the light-view map.
 #include "material.glsl"
 
 in vec2 vUv;
 in vec3 vColor;
 
 void main() {
-    if (uAlphaCutoff < 0.0) return;
+    if (uAlphaCutoff < 0.0) return;  // an opaque material, should one be drawn with it
     materialBaseColor(vUv, vColor);  // discards the texels the mask cuts away
 }

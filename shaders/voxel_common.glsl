@@ -12,7 +12,6 @@ float opticalDepth(float alpha) { return -log(1.0 - min(alpha, MAX_OPACITY)); }
 // Opacity of a path of `length` voxels through a medium of density τ per voxel.
 float opacityOver(float tau, float length) { return 1.0 - exp(-tau * length); }
 
-// Octahedral encoding of a unit vector into two 16-bit snorm values.
 // A fragment's column coverage (voxelize.frag): the projection axis (2 bits) and the share of the
 // pixel square the triangle covers (6 bits), in one byte.
 uint packColumnCoverage(int axis, float coverage) {
@@ -21,6 +20,7 @@ uint packColumnCoverage(int axis, float coverage) {
 int columnAxis(uint bits) { return int(bits & 3u); }
 float columnCoverage(uint bits) { return float(bits >> 2) / 63.0; }
 
+// Octahedral encoding of a unit vector into two 16-bit snorm values.
 uint packNormal(vec3 n) {
     n /= max(abs(n.x) + abs(n.y) + abs(n.z), 1e-30);
     vec2 e = n.z >= 0.0 ? n.xy : (1.0 - abs(n.yx)) * vec2(n.x >= 0.0 ? 1.0 : -1.0, n.y >= 0.0 ? 1.0 : -1.0);
