@@ -8,6 +8,5 @@ in vec2 vUv;
 in vec3 vColor;
 
 void main() {
-    if (uAlphaCutoff < 0.0) return;  // an opaque material, should one be drawn with it
     materialBaseColor(vUv, vColor);  // discards the texels the mask cuts away
 }

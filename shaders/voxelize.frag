@@ -164,15 +164,14 @@ void main() {
     int last = min(int(floor(wHigh + kEps)), uResolution - 1);
     float span = wHigh - wLow;
     int planeCell = clamp(int(floor(0.5 * (wLow + wHigh))), first, last);
-    uint colour = packUnorm4x8(vec4(clamp(base.rgb, 0.0, 1.0), 0.0)) & 0xFFFFFFu;
+    // Within one cell (or flat in one) the area already says what the cell blocks.
+    float columnCoverage = span > 1e-6 && last > first ? coverage : 0.0;
+    uint albedo = packUnorm4x8(vec4(clamp(base.rgb, 0.0, 1.0), 0.0)) | (packColumnCoverage(gAxis, columnCoverage) << 24);
     uint packedNormal = packNormal(gFaceNormal);
     for (int k = first; k <= last; ++k) {
         float share = span > 1e-6 ? max(min(wHigh, float(k + 1)) - max(wLow, float(k)), 0.0) / span
                                   : (k == planeCell ? 1.0 : 0.0);
         float area = coverage * gAreaScale * share;
-        // Within one cell (or flat in one) the area already says what the cell blocks.
-        float columnCoverage = span > 1e-6 && last > first ? coverage : 0.0;
-        uint albedo = colour | (packColumnCoverage(gAxis, columnCoverage) << 24);
         uvec3 cell = unproject(uvec3(uvec2(pixel), uint(k)), gAxis);
         uint index = atomicAdd(fragmentCount, 1u);
         if (index < uCapacity) {

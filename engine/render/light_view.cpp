@@ -1,7 +1,6 @@
 #include "render/light_view.hpp"
 
 #include <algorithm>
-#include <utility>
 
 #include "core/error.hpp"
 #include "gl/raster_state.hpp"
@@ -98,13 +97,13 @@ void LightViewMap::render(const LightViewPrograms& programs, const GpuScene& gpu
         // Depth only, no colour targets; the same view and the same alpha test.
         gl::beginRasterPass({shadowFramebuffer_.id(), shadowResolution_, shadowResolution_, true});
         glClearNamedFramebufferfv(shadowFramebuffer_.id(), GL_DEPTH, 0, zero);
-        const std::pair<const gl::Program*, GpuScene::Materials> draws[2] = {
-            {&programs.shadowOpaque, GpuScene::Materials::Opaque}, {&programs.shadowMasked, GpuScene::Materials::Masked}};
-        for (const auto& [program, materials] : draws) {
-            glUseProgram(program->id());
-            gl::setUniform(program->id(), "uViewProjection", transform_.view.viewProjection);
-            gpuScene.draw(program->id(), materials);
-        }
+        auto drawDepth = [&](const gl::Program& program, GpuScene::Materials materials) {
+            glUseProgram(program.id());
+            gl::setUniform(program.id(), "uViewProjection", transform_.view.viewProjection);
+            gpuScene.draw(program.id(), materials);
+        };
+        drawDepth(programs.shadowOpaque, GpuScene::Materials::Opaque);
+        drawDepth(programs.shadowMasked, GpuScene::Materials::Masked);
     }
     gl::endRasterPass();
 }

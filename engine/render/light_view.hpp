@@ -14,12 +14,20 @@
 
 namespace vct {
 
+// The programs every light-view map is drawn with: the photons (scene.vert + light_view.frag)
+// and the finer shadow map's depth-only draw: opaque materials with no fragment shader (the
+// rasterizer's depth alone), masked ones with shadow_depth.frag, which only runs the alpha test.
+struct LightViewPrograms {
+    gl::Program photons, shadowOpaque, shadowMasked;
+};
+LightViewPrograms lightViewPrograms();
+
 class LightViewMap {
 public:
     LightViewMap(int photonResolution, int shadowResolution);
     // `face`: which cube face of a point light this map shows (0 for the other lights).
     // `programs`: lightViewPrograms(), shared by every map.
-    void render(const struct LightViewPrograms& programs, const GpuScene& gpuScene, const Scene& scene,
+    void render(const LightViewPrograms& programs, const GpuScene& gpuScene, const Scene& scene,
                 const Light& light, int face = 0);
 
     // DEPTH32F, compare mode GL_GEQUAL, shadowResolution() texels per side.
@@ -48,14 +56,6 @@ private:
     gl::Framebuffer framebuffer_, shadowFramebuffer_;
     LightViewTransform transform_;
 };
-
-// The programs every light-view map is drawn with: the photons (scene.vert + light_view.frag)
-// and the finer shadow map's depth-only draw: opaque materials with no fragment shader (the
-// rasterizer's depth alone), masked ones with shadow_depth.frag, which only runs the alpha test.
-struct LightViewPrograms {
-    gl::Program photons, shadowOpaque, shadowMasked;
-};
-LightViewPrograms lightViewPrograms();
 
 // How many maps a light needs: six for a point light (a cube), one for the others.
 int lightViewCount(const Light& light);
