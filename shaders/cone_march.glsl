@@ -46,48 +46,84 @@ vec3 brickPosition(uint node, int level, vec3 p) {
     return clamp((p - vec3(unpackCell(nodeCoord[node])) * size) / size, 0.0, 1.0) * 2.0;
 }
 
-// What node `node` shows at `inBrick` (brickPosition) along direction i (+a for i = 2a, −a for
-// i = 2a + 1): the cone's share along it × (L·τ, τ) of its slab pool.
-// A slab along ±a starts at its sample and reaches one sample spacing ahead. The samples are
-// read one spacing ahead of p along ±a (in the node beside it, past the brick's face), so the
-// ones interpolated start at p or beyond: a sample behind p would report what lies behind the
-// cone, e.g. the lit top of a thin roof to a cone passing under it.
-// With bricks, trilinear inside the bricks; without (`--no-bricks`), the nearest sample: the
-// unfiltered data, for comparison.
-vec4 sampleDirection(uint node, vec3 inBrick, int i) {
-    int a = i >> 1;
-    bool along = (i & 1) == 0;
-    vec3 at = inBrick;
-    at[a] += along ? 1.0 : -1.0;
-    uint holder = node;
-    if (at[a] > 2.0 || at[a] < 0.0) {
-        holder = nodeNeighbour[node * 6u + uint(2 * a + (along ? 1 : 0))];  // −x +x −y +y −z +z
-        at[a] += along ? -2.0 : 2.0;
-    }
-    if (holder == NONE) return vec4(0.0);  // empty space ahead
-    float weight = along ? coneAlongPlus[a] : coneAlongMinus[a];
-    vec3 sampleAt = uUseBricks != 0 ? at : round(at);
-    vec3 poolSize = vec3(textureSize(uDirectional[0], 0));
-    return weight * texture(uDirectional[i], (vec3(brickOrigin(holder)) + 0.5 + sampleAt) / poolSize);
+// The node of level `level` containing q, a point ahead of p along axis a (`face`: the face of
+// that side, −x +x −y +y −z +z), or NONE: empty or outside the grid. `known`, of knownLevel <
+// level, holds p; q lies in it or, less than its edge away along a, in its neighbour there, where
+// the descent starts.
+uint nodeAhead(vec3 q, int level, uvec3 cell, uint known, int knownLevel, int face) {
+    if (any(lessThan(q, vec3(0.0))) || any(greaterThanEqual(q, vec3(float(1 << uLevels))))) return NONE;
+    uvec3 qCell = uvec3(floor(q));
+    uint shift = uint(uLevels - knownLevel);
+    uint node = all(equal(qCell >> shift, cell >> shift)) ? known : nodeNeighbour[known * 6u + uint(face)];
+    for (int l = knownLevel + 1; l <= level && node != NONE; ++l) node = childOf(node, childSlot(qCell >> uint(uLevels - l)));
+    return node;
 }
 
-// What the cone sees at p of node `node` (level `level`): (L·τ, τ) summed over the six
-// directions. A slab read ahead reaches up to two of its level's spacings from p, about the
-// footprint's diameter: along the axis that is where the cone goes next, but sideways it lies
-// outside the cone (a horizontal cone high in a gallery would see the sunlit courtyard floor
-// below it). Directions more than 60° from the axis are therefore read from `finer`, the node
-// one level finer at p, whose slabs stay within the footprint (NONE: from `node`).
-vec4 sampleNode(uint node, int level, uint finer, vec3 p) {
-    vec3 inNode = brickPosition(node, level, p);
+// A cone at p reads, for each direction i (+a for i = 2a, −a for i = 2a + 1), the slab samples
+// one spacing ahead of p along it. A slab along ±a starts at its sample and reaches one spacing
+// ahead, so the samples interpolated start at p or beyond: a sample behind p would report what
+// lies behind the cone, e.g. the lit top of a thin roof to a cone passing under it.
+// slabAhead: from `inBrick`, p's position in the brick of its own node `node`: the node holding
+// the point ahead (itself, or its neighbour past the brick's face; NONE: empty space ahead) and
+// the point's position in that node's brick.
+uint slabAhead(uint node, vec3 inBrick, int i, out vec3 at) {
+    int a = i >> 1;
+    bool along = (i & 1) == 0;
+    at = inBrick;
+    at[a] += along ? 1.0 : -1.0;
+    if (at[a] <= 2.0 && at[a] >= 0.0) return node;
+    at[a] += along ? -2.0 : 2.0;
+    return nodeNeighbour[node * 6u + uint(2 * a + (along ? 1 : 0))];  // −x +x −y +y −z +z
+}
+
+// The same where p's node at `level` is empty: the point ahead may still lie in a node that holds
+// geometry. A cone about to reach a wall reads the wall's slab before it enters the wall's node,
+// as it would from a node of its own; dropping that read made a cone's view of a wall depend on
+// where its samples fell relative to the node grid, which printed the grid into the image.
+uint slabAheadOfEmpty(int level, vec3 p, uvec3 cell, uint known, int knownLevel, int i, out vec3 at) {
+    int a = i >> 1;
+    bool along = (i & 1) == 0;
+    vec3 q = p;
+    q[a] += (along ? 0.5 : -0.5) * float(1 << (uLevels - level));
+    uint holder = nodeAhead(q, level, cell, known, knownLevel, 2 * a + (along ? 1 : 0));
+    at = holder != NONE ? brickPosition(holder, level, q) : vec3(0.0);
+    return holder;
+}
+
+// What the cone sees at p at level `level` through p's node `node` there (NONE: empty; `known`
+// of knownLevel is then a node holding p, for nodeAhead): (L·τ, τ) summed over the six directions,
+// each the cone's share along it × the slab ahead of p along it.
+// A slab read ahead reaches up to two of its level's spacings from p, about the footprint's
+// diameter: along the axis that is where the cone goes next, but sideways it lies outside the
+// cone (a horizontal cone high in a gallery would see the sunlit courtyard floor below it).
+// Directions more than 60° from the axis are therefore read from `finer`, the node one level
+// finer at p, whose slabs stay within the footprint (NONE: from `node`; where `node` is empty,
+// so is the finer one: nothing).
+// With bricks, trilinear inside the bricks; without (`--no-bricks`), the nearest sample: the
+// unfiltered data, for comparison.
+vec4 sampleLevel(uint node, int level, uint finer, vec3 p, uvec3 cell, uint known, int knownLevel) {
+    vec3 inNode = node != NONE ? brickPosition(node, level, p) : vec3(0.0);
     vec3 inFiner = finer != NONE ? brickPosition(finer, level + 1, p) : inNode;
+    vec3 poolSize = vec3(textureSize(uDirectional[0], 0));
     vec4 value = vec4(0.0);
-    // Every direction in turn, so that which pool is read is the same in every invocation.
+    // Every direction in turn, with one lookup site, so that which pool is read is the same in
+    // every invocation.
     for (int i = 0; i < 6; ++i) {
         int a = i >> 1;
-        float alignment = (i & 1) == 0 ? coneAxis[a] : -coneAxis[a];
-        bool lateral = alignment < LATERAL_ALIGNMENT && finer != NONE;
-        // One call with the node chosen first: a call in each branch would run both on SIMD.
-        value += sampleDirection(lateral ? finer : node, lateral ? inFiner : inNode, i);
+        bool along = (i & 1) == 0;
+        bool lateral = (along ? coneAxis[a] : -coneAxis[a]) < LATERAL_ALIGNMENT;
+        vec3 at;
+        uint holder = NONE;
+        if (node == NONE) {
+            if (!lateral) holder = slabAheadOfEmpty(level, p, cell, known, knownLevel, i, at);
+        } else {
+            bool fromFiner = lateral && finer != NONE;
+            holder = slabAhead(fromFiner ? finer : node, fromFiner ? inFiner : inNode, i, at);
+        }
+        if (holder == NONE) continue;  // empty space ahead
+        float weight = along ? coneAlongPlus[a] : coneAlongMinus[a];
+        vec3 sampleAt = uUseBricks != 0 ? at : round(at);
+        value += weight * texture(uDirectional[i], (vec3(brickOrigin(holder)) + 0.5 + sampleAt) / poolSize);
     }
     return value;
 }
@@ -109,11 +145,25 @@ int coarseLevelFor(float lod) {
     return max(uLevels - 1 - int(floor(clamp(lod, 0.0, float(uLevels - 1)))) - 1, 0);
 }
 
+// Whether every read of a sample at p whose coarser level is coarseLevel stays inside the empty
+// node [lo, lo + size]³: then it sees nothing and can be skipped. The reads ahead go half that
+// level's node edge along the axes within 60° of the cone's axis (sampleLevel).
+bool readsStayInside(vec3 p, int coarseLevel, vec3 lo, float size) {
+    float reach = 0.5 * float(1 << (uLevels - coarseLevel));
+    bool inside = true;
+    for (int a = 0; a < 3; ++a) {
+        float ahead = p[a] + (coneAxis[a] > 0.0 ? reach : -reach);
+        if (abs(coneAxis[a]) >= LATERAL_ALIGNMENT && (ahead < lo[a] || ahead >= lo[a] + size)) inside = false;
+    }
+    return inside;
+}
+
 // Radiance at p (voxel space) for a footprint of 2^lod voxels: the two nearest levels
-// (sampleNode), linear between them. Returns false when p lies in an empty node of the
-// coarser level, with tSkip where the ray leaves that node and emptyLevel its level.
-bool sampleRadiance(vec3 p, float lod, vec3 origin, vec3 direction, vec3 invDirection, out vec4 value,
-                    out float tSkip, out int emptyLevel) {
+// (sampleLevel), linear between them. Returns false when p lies in an empty node of the coarser
+// level whose reads stay inside it, with the node (emptyLo, emptyLevel) and tSkip where the ray
+// leaves it.
+bool sampleRadiance(vec3 p, float lod, vec3 origin, vec3 invDirection, out vec4 value, out float tSkip,
+                    out vec3 emptyLo, out int emptyLevel) {
     lod = clamp(lod, 0.0, float(uLevels - 1));
     int fineLevel = uLevels - 1 - int(floor(lod));
     int coarseLevel = max(fineLevel - 1, 0);
@@ -132,20 +182,23 @@ bool sampleRadiance(vec3 p, float lod, vec3 origin, vec3 direction, vec3 invDire
         fineNode = node;
         if (fineLevel + 1 < uLevels) finerNode = childOf(node, childSlot(cell >> uint(uLevels - fineLevel - 1)));
     }
-    if (coarseNode == NONE) {  // empty at the coarse level (or above): skip that empty node
+    if (coarseNode == NONE) {  // empty at the coarse level (or above)
         emptyLevel = level;
         float size = float(1 << (uLevels - level));
-        vec3 lo = vec3(cell >> uint(uLevels - level)) * size;
-        tSkip = rayBox(origin, invDirection, lo, lo + size).y;
-        value = vec4(0.0);
-        return false;
+        emptyLo = vec3(cell >> uint(uLevels - level)) * size;
+        tSkip = rayBox(origin, invDirection, emptyLo, emptyLo + size).y;
+        if (readsStayInside(p, coarseLevel, emptyLo, size)) {
+            value = vec4(0.0);
+            return false;
+        }
     }
-    vec4 samples[2] = vec4[2](vec4(0.0), vec4(0.0));
+    // Where a node is missing, `node` is p's deepest one, of level − 1: the reads ahead of p
+    // look up their nodes from it (nodeAhead).
     uint nodes[2] = uint[2](fineNode, coarseNode);
     uint finerNodes[2] = uint[2](finerNode, fineLevel == coarseLevel ? finerNode : fineNode);
     int levels[2] = int[2](fineLevel, coarseLevel);
-    for (int k = 0; k < 2; ++k)
-        if (nodes[k] != NONE) samples[k] = sampleNode(nodes[k], levels[k], finerNodes[k], p);
+    vec4 samples[2];
+    for (int k = 0; k < 2; ++k) samples[k] = sampleLevel(nodes[k], levels[k], finerNodes[k], p, cell, node, level - 1);
     value = fineLevel == coarseLevel ? samples[1] : mix(samples[0], samples[1], blend);
     return true;
 }
@@ -164,17 +217,25 @@ vec4 traceCone(vec3 origin, vec3 normal, vec3 direction, float tanHalfAngle) {
         vec3 p = origin + direction * t + normal * (uConeLift * diameter);  // from t, never accumulated
         vec4 value;
         float tSkip;
+        vec3 emptyLo;
         int emptyLevel;
-        if (!sampleRadiance(p, coneLod(t, tanHalfAngle, direction, normal), origin, direction, invDirection, value, tSkip,
+        if (!sampleRadiance(p, coneLod(t, tanHalfAngle, direction, normal), origin, invDirection, value, tSkip, emptyLo,
                             emptyLevel)) {
             // Skip the empty node along the very sample sequence a plain march would take
             // (arithmetic only, no lookups): jumping straight to the node's exit would shift the
             // step phase from pixel to pixel and print the node grid into the image as moiré.
-            // Stop early where the widening cone starts sampling a level above the empty node.
-            do {
+            // Stop where the widening cone starts sampling a level above the empty node, or where
+            // a sample's reads reach out of it.
+            float size = float(1 << (uLevels - emptyLevel));
+            bool skip = true;
+            while (skip) {
                 t += uConeStep * max(2.0 * t * tanHalfAngle, 1.0);
+                float lod = coneLod(t, tanHalfAngle, direction, normal);
+                vec3 next = origin + direction * t + normal * (uConeLift * max(2.0 * t * tanHalfAngle, 1.0));
+                skip = t < tSkip && coarseLevelFor(lod) >= emptyLevel &&
+                       readsStayInside(next, coarseLevelFor(lod), emptyLo, size);
                 ++samplesSaved;
-            } while (t < tSkip && coarseLevelFor(coneLod(t, tanHalfAngle, direction, normal)) >= emptyLevel);
+            }
             --samplesSaved;  // the sample that found the node empty was looked up
             continue;
         }

@@ -25,11 +25,11 @@ namespace {
 
 // Measured (docs/benchmark.md) and the bounds asserted, with room for noise.
 constexpr double kLeakMean = 0.005, kLeakLargestPixel = 0.02;  // of the lit floor's radiance
-constexpr double kSheetLargestPixel = 0.08;  // the pixels within a voxel of the sheet (frame.md, Known limits)
-constexpr double kCornellMean[2] = {0.8, 1.1}, kCornellCells[2] = {0.4, 1.35};
-constexpr double kSponzaMean[2] = {0.75, 1.0}, kSponzaCells[2] = {0.6, 1.3};
+constexpr double kSheetLargestPixel = 0.05;  // the pixels within a voxel of the sheet (frame.md, Known limits)
+constexpr double kCornellMean[2] = {0.85, 1.1}, kCornellCells[2] = {0.4, 1.35};
+constexpr double kSponzaMean[2] = {0.85, 1.1}, kSponzaCells[2] = {0.7, 1.3};
 constexpr double kFurnaceMeanTolerance = 0.05, kFurnaceLowTolerance = 0.1;  // of 1.5
-constexpr double kFurnaceBouncesTolerance = 0.08;  // of 1.75 and 1.875
+constexpr double kFurnaceBouncesTolerance = 0.05;  // of 1.75 and 1.875 (the acceptance bound)
 
 ImageF render(const std::filesystem::path& dir, const std::string& name, const std::string& options) {
     const auto out = dir / name;

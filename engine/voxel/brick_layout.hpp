@@ -68,7 +68,8 @@
 // Light seen from the dark side of a wall is then what lies on that side, at every level.
 //
 // Reading: a cone at p reads, for each direction, the samples one spacing ahead of p along it
-// (so no sample behind p, whose slab could hold what lies behind the cone, is interpolated), and
+// (so no sample behind p, whose slab could hold what lies behind the cone, is interpolated; the
+// point ahead may lie in a node that holds geometry where p's own node is empty), and
 // combines the six with the weights of its spread of directions (shaders/cone_trace.comp).
 #include <cstdint>
 
