@@ -34,7 +34,7 @@ uniform float uVoxelScale;
 vec3 coneAxis;
 vec3 coneAlongPlus, coneAlongMinus;
 
-// Directions at more than 60° from the cone's axis are read one level finer (sampleNode). Of the
+// Directions at more than 60° from the cone's axis are read one level finer (sampleLevel). Of the
 // thresholds measured on Cornell and the four Sponza views together (30°, 45°, 60°, 73°), 60°
 // brought the regions of each image closest to the path tracer at nearly the same RMSE; 30°
 // brings the image means closer still but raises the RMSE (more of the cone read finer).
@@ -78,8 +78,9 @@ uint slabAhead(uint node, vec3 inBrick, int i, out vec3 at) {
 
 // The same where p's node at `level` is empty: the point ahead may still lie in a node that holds
 // geometry. A cone about to reach a wall reads the wall's slab before it enters the wall's node,
-// as it would from a node of its own; dropping that read made a cone's view of a wall depend on
-// where its samples fell relative to the node grid, which printed the grid into the image.
+// as it would from a node of its own. Without that read a cone's view of a wall would depend on
+// where its samples fall relative to the node grid, and the grid would print into the image as
+// blocks of constant light.
 uint slabAheadOfEmpty(int level, vec3 p, uvec3 cell, uint known, int knownLevel, int i, out vec3 at) {
     int a = i >> 1;
     bool along = (i & 1) == 0;
