@@ -15,6 +15,7 @@
 
 #include "bench/reference_cache.hpp"
 #include "core/image.hpp"
+#include "core/math_constants.hpp"
 #include "metrics/region_ratio.hpp"
 #include "test_models.hpp"
 #include "test_util.hpp"
@@ -26,6 +27,7 @@ namespace {
 // Measured (docs/benchmark.md) and the bounds asserted, with room for noise.
 constexpr double kLeakMean = 0.005, kLeakLargestPixel = 0.02;  // of the lit floor's radiance
 constexpr double kSheetLargestPixel = 0.05;  // the pixels within a voxel of the sheet (frame.md, Known limits)
+constexpr double kUnderSheetMean = 0.015, kUnderSheetLargestPixel = 0.02;  // of π·Le
 constexpr double kCornellMean[2] = {0.85, 1.1}, kCornellCells[2] = {0.4, 1.35};
 constexpr double kSponzaMean[2] = {0.85, 1.1}, kSponzaCells[2] = {0.7, 1.3};
 constexpr double kFurnaceMeanTolerance = 0.05, kFurnaceLowTolerance = 0.1;  // of 1.5
@@ -143,6 +145,41 @@ TEST(GiAccuracy, ASheetBetweenASunlitRoomAndAClosedOneKeepsItDark) {
     const Leak leak = closedRoomLeak(0.0);
     EXPECT_LE(leak.mean, kLeakMean);
     EXPECT_LE(leak.largest, kSheetLargestPixel);
+}
+
+TEST(GiAccuracy, AFloorUnderASheetSeesNoneOfTheEmitterAboveIt) {
+    // Three parallel squares 4 m wide: a floor, a sheet 1 m above it and an emitter (Le = 1) 3.5 m
+    // up. From the middle of the floor every upward ray meets the sheet's unlit underside, so its
+    // one-bounce indirect light is 0. The cones cross the empty space under the sheet at coarse
+    // levels: a sample whose own node is empty must still read the sheet's slab ahead of it, or
+    // whether a cone sees the sheet depends on where its samples fall and it passes through.
+    const auto dir = test::testDir();
+    test::ObjWriter obj;
+    obj.material("white", glm::vec3(0.5f));
+    obj.floor(0.0f, 2.0f);
+    obj.floor(1.0f, 2.0f);
+    obj.material("emitter", glm::vec3(0.5f), glm::vec3(1.0f));
+    obj.floor(3.5f, 2.0f);
+    const auto model = obj.write(dir);
+    for (int levels : {6, 7, 8}) {
+        const ImageF indirect = render(dir, "sheet" + std::to_string(levels),
+                                       "--scene " + model.string() + " --voxel-levels " + std::to_string(levels) +
+                                           " --eye 0.05,0.6,0.07 --target 0.05,0,0.0701 --fov 90 --width 64"
+                                           " --height 64 --aov indirect --gi-resolution full");
+        double sum = 0.0, largest = 0.0;
+        for (int y = 16; y < 48; ++y)
+            for (int x = 16; x < 48; ++x) {
+                const float* p = &indirect.rgba[(std::size_t(y) * indirect.width + x) * 4];
+                const double e = (p[0] + p[1] + p[2]) / 3.0;
+                sum += e;
+                largest = std::max(largest, e);
+            }
+        const double full = kPi * 1.0;  // E of a floor that saw the emitter everywhere
+        std::printf("[ leak     ] floor under a sheet, %d levels: irradiance mean %.2f %%, largest %.2f %% of pi*Le\n",
+                    levels, 100.0 * sum / (32.0 * 32.0) / full, 100.0 * largest / full);
+        EXPECT_LE(sum / (32.0 * 32.0), kUnderSheetMean * full) << levels << " levels";
+        EXPECT_LE(largest, kUnderSheetLargestPixel * full) << levels << " levels";
+    }
 }
 
 TEST(GiAccuracy, WhiteFurnaceGetsOneBounce) {

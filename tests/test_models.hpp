@@ -12,12 +12,16 @@ namespace vct::test {
 struct ObjMaterial {
     std::string name;
     glm::vec3 albedo{0.5f};
+    glm::vec3 emission{0.0f};  // Le, W/(m²·sr)
 };
 
 // Accumulates triangles per material and writes model.obj + model.mtl.
 class ObjWriter {
 public:
-    void material(const std::string& name, glm::vec3 albedo) { materials_.push_back({name, albedo}); use(name); }
+    void material(const std::string& name, glm::vec3 albedo, glm::vec3 emission = glm::vec3(0.0f)) {
+        materials_.push_back({name, albedo, emission});
+        use(name);
+    }
     void use(const std::string& name) { body_ += "usemtl " + name + "\n"; }
     void triangle(glm::vec3 a, glm::vec3 b, glm::vec3 c) {
         for (glm::vec3 v : {a, b, c}) vertices_.push_back(v);
@@ -41,8 +45,11 @@ public:
     }
     std::filesystem::path write(const std::filesystem::path& dir, const std::string& name = "model") const {
         std::ofstream mtl(dir / (name + ".mtl"));
-        for (const auto& m : materials_)
+        for (const auto& m : materials_) {
             mtl << "newmtl " << m.name << "\nKd " << m.albedo.x << " " << m.albedo.y << " " << m.albedo.z << "\n";
+            if (m.emission != glm::vec3(0.0f))
+                mtl << "Ke " << m.emission.x << " " << m.emission.y << " " << m.emission.z << "\n";
+        }
         const auto path = dir / (name + ".obj");
         std::ofstream obj(path);
         obj << "mtllib " << name << ".mtl\n";
