@@ -129,6 +129,9 @@ vec4 sampleLevel(uint node, int level, uint finer, vec3 p, uvec3 cell, uint know
     return value;
 }
 
+// The cone's diameter at distance t, in voxels (never below one voxel, the finest sample).
+float coneDiameter(float t, float tanHalfAngle) { return max(2.0 * t * tanHalfAngle, 1.0); }
+
 // The footprint a cone samples at distance t, as a level of detail (2^lod voxels): its diameter,
 // but never coarser than half its height above the surface it starts from. A sample's slabs
 // reach up to two of its level's spacings from p (interpolation and slab): sampled coarser, a cone
@@ -136,7 +139,7 @@ vec4 sampleLevel(uint node, int level, uint finer, vec3 p, uvec3 cell, uint know
 // wall, a roof's sunlit top), and be blocked or lit by it. Near the surface cones are therefore
 // sampled finer than their width; at a distance their width decides.
 float coneLod(float t, float tanHalfAngle, vec3 direction, vec3 normal) {
-    float diameter = max(2.0 * t * tanHalfAngle, 1.0);
+    float diameter = coneDiameter(t, tanHalfAngle);
     float height = uConeOffset + t * dot(direction, normal);
     return min(log2(diameter), log2(max(height, 1.0)) - 1.0);
 }
@@ -214,7 +217,7 @@ vec4 traceCone(vec3 origin, vec3 normal, vec3 direction, float tanHalfAngle) {
     vec4 accumulated = vec4(0.0);
     float t = 1.0;
     for (int i = 0; i < 1024 && t < tEnd && accumulated.a < 0.99; ++i) {
-        float diameter = max(2.0 * t * tanHalfAngle, 1.0);
+        float diameter = coneDiameter(t, tanHalfAngle);
         vec3 p = origin + direction * t + normal * (uConeLift * diameter);  // from t, never accumulated
         vec4 value;
         float tSkip;
@@ -230,11 +233,10 @@ vec4 traceCone(vec3 origin, vec3 normal, vec3 direction, float tanHalfAngle) {
             float size = float(1 << (uLevels - emptyLevel));
             bool skip = true;
             while (skip) {
-                t += uConeStep * max(2.0 * t * tanHalfAngle, 1.0);
-                float lod = coneLod(t, tanHalfAngle, direction, normal);
-                vec3 next = origin + direction * t + normal * (uConeLift * max(2.0 * t * tanHalfAngle, 1.0));
-                skip = t < tSkip && coarseLevelFor(lod) >= emptyLevel &&
-                       readsStayInside(next, coarseLevelFor(lod), emptyLo, size);
+                t += uConeStep * coneDiameter(t, tanHalfAngle);
+                int coarseLevel = coarseLevelFor(coneLod(t, tanHalfAngle, direction, normal));
+                vec3 next = origin + direction * t + normal * (uConeLift * coneDiameter(t, tanHalfAngle));
+                skip = t < tSkip && coarseLevel >= emptyLevel && readsStayInside(next, coarseLevel, emptyLo, size);
                 ++samplesSaved;
             }
             --samplesSaved;  // the sample that found the node empty was looked up
