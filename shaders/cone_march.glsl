@@ -63,14 +63,14 @@ uint nodeAhead(vec3 q, int level, uvec3 cell, uint known, int knownLevel, int fa
 // one spacing ahead of p along it. A slab along ±a starts at its sample and reaches one spacing
 // ahead, so the samples interpolated start at p or beyond: a sample behind p would report what
 // lies behind the cone, e.g. the lit top of a thin roof to a cone passing under it.
-// slabAhead: from `inBrick`, p's position in the brick of its own node `node`: the node holding
-// the point ahead (itself, or its neighbour past the brick's face; NONE: empty space ahead) and
-// the point's position in that node's brick.
-uint slabAhead(uint node, vec3 inBrick, int i, out vec3 at) {
+// slabAhead: from `inBrick`, p's position in the brick of its own node `node`, `ahead` spacings
+// ahead: the node holding that point (itself, or its neighbour past the brick's face; NONE: empty
+// space ahead) and the point's position in that node's brick.
+uint slabAhead(uint node, vec3 inBrick, int i, float ahead, out vec3 at) {
     int a = i >> 1;
     bool along = (i & 1) == 0;
     at = inBrick;
-    at[a] += along ? 1.0 : -1.0;
+    at[a] += along ? ahead : -ahead;
     if (at[a] <= 2.0 && at[a] >= 0.0) return node;
     at[a] += along ? -2.0 : 2.0;
     return nodeNeighbour[node * 6u + uint(2 * a + (along ? 1 : 0))];  // −x +x −y +y −z +z
@@ -98,8 +98,10 @@ uint slabAheadOfEmpty(int level, vec3 p, uvec3 cell, uint known, int knownLevel,
 // diameter: along the axis that is where the cone goes next, but sideways it lies outside the
 // cone (a horizontal cone high in a gallery would see the sunlit courtyard floor below it).
 // Directions more than 60° from the axis are therefore read from `finer`, the node one level
-// finer at p, whose slabs stay within the footprint (NONE: from `node`; where `node` is empty,
-// so is the finer one: nothing).
+// finer at p, whose slabs stay within the footprint. Where the finer node is empty, its read is
+// taken from `node`'s coarser slabs, starting where the finer read would: half a spacing ahead
+// (reading them a whole spacing ahead reached past the footprint and made the choice between
+// the two levels a jump; where `node` is empty, so is the finer one: nothing).
 // With bricks, trilinear inside the bricks; without (`--no-bricks`), the nearest sample: the
 // unfiltered data, for comparison.
 vec4 sampleLevel(uint node, int level, uint finer, vec3 p, uvec3 cell, uint known, int knownLevel) {
@@ -119,7 +121,8 @@ vec4 sampleLevel(uint node, int level, uint finer, vec3 p, uvec3 cell, uint know
             if (!lateral) holder = slabAheadOfEmpty(level, p, cell, known, knownLevel, i, at);
         } else {
             bool fromFiner = lateral && finer != NONE;
-            holder = slabAhead(fromFiner ? finer : node, fromFiner ? inFiner : inNode, i, at);
+            float ahead = lateral && !fromFiner && level + 1 < uLevels ? 0.5 : 1.0;
+            holder = slabAhead(fromFiner ? finer : node, fromFiner ? inFiner : inNode, i, ahead, at);
         }
         if (holder == NONE) continue;  // empty space ahead
         float weight = along ? coneAlongPlus[a] : coneAlongMinus[a];
