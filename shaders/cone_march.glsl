@@ -262,12 +262,8 @@ vec4 traceCone(vec3 origin, vec3 normal, vec3 direction, float tanHalfAngle) {
 // The cone set around `normal` from `origin` (voxel space): irradiance E (rgb) and the occlusion
 // Σ weight·opacity (a; π when every cone is blocked).
 vec4 gatherIrradiance(vec3 origin, vec3 normal) {
-    // Orthonormal basis around the normal (Duff et al. 2017).
-    float s = normal.z >= 0.0 ? 1.0 : -1.0;
-    float a = -1.0 / (s + normal.z);
-    float b = normal.x * normal.y * a;
-    vec3 tangent = vec3(1.0 + s * normal.x * normal.x * a, s * b, -s * normal.x);
-    vec3 bitangent = vec3(b, s + normal.y * normal.y * a, -normal.y);
+    vec3 tangent, bitangent;
+    orthonormalBasis(normal, tangent, bitangent);
     vec4 gathered = vec4(0.0);
     for (int c = 0; c < uConeCount; ++c) {
         vec3 d = uConeDirection[c];

@@ -13,36 +13,65 @@ vec2 shadowTapPair(int pair, int radius, float f) {
     return vec2(b / (a + b), a + b);
 }
 
-// Fraction of the light that reaches `p` (0 = fully shadowed). The point is pushed off the
-// surface along its normal and towards the light by about a texel: that removes acne without a
-// depth bias tuned per scene, and it scales with the texel, so it works at any scene scale.
+// `p` in the map's texel coordinates (texel centres at integers) and its depth.
+vec3 shadowMapPoint(vec3 p, vec2 size) {
+    vec4 clip = uLightViewProjection * vec4(p, 1.0);
+    vec3 ndc = clip.xyz / clip.w;
+    return vec3((ndc.xy * 0.5 + 0.5) * size - 0.5, ndc.z);
+}
+
+// Receiver-plane depth: how the depth of the receiving surface (the plane through the point with
+// normal `n`) changes per texel of the map, found by projecting two steps along the plane. Each
+// filter tap then compares the depth the surface has at that tap, not at the point, so a surface
+// lit at a grazing angle does not shadow itself across the filter. Clamped to `limit` per texel:
+// a plane edge-on to the light has no finite slope.
+vec2 receiverDepthSlope(vec3 p, vec3 n, float step, vec3 centre, vec2 size, float limit) {
+    vec3 tangent, bitangent;
+    orthonormalBasis(n, tangent, bitangent);
+    vec3 d1 = shadowMapPoint(p + tangent * step, size) - centre;
+    vec3 d2 = shadowMapPoint(p + bitangent * step, size) - centre;
+    float det = d1.x * d2.y - d2.x * d1.y;
+    if (!(abs(det) > 1e-6)) return vec2(0.0);
+    vec2 slope = vec2(d1.z * d2.y - d2.z * d1.y, d2.z * d1.x - d1.z * d2.x) / det;
+    return clamp(slope, vec2(-limit), vec2(limit));
+}
+
+// Fraction of the light that reaches `p` (0 = fully shadowed). Acne is kept away by following
+// the receiving plane's depth across the filter (receiverDepthSlope), with a margin of one texel
+// of that slope (a bilinear comparison spans a texel around its tap, where the plane's depth
+// differs by up to that much), and by pushing the point a texel towards the light and a quarter
+// texel off the surface (interpolated normals differ from the true surface). The push along the
+// normal stays small on purpose: it moves the lookup sideways in the map, and at grazing light
+// a sideways texel moves the shadow edge of an overhang along the wall by several texels.
+// Everything scales with the texel, so it works at any scene scale.
 float shadowVisibility(vec3 p, vec3 n, vec3 toLight, float distanceToLight) {
     float texel = uShadowTexelSize * (uShadowPerspective != 0 ? distanceToLight : 1.0);
-    // Slope-scaled: at grazing light one texel of the map spans a long stretch of the surface and
-    // the depth changes a lot across it, so the push off the surface grows with tanθ (capped).
-    float cosTheta = clamp(dot(n, toLight), 0.05, 1.0);
-    float slope = min(sqrt(1.0 - cosTheta * cosTheta) / cosTheta, 4.0);
-    vec3 offsetPoint = p + n * (texel * (1.0 + 0.5 * slope)) + toLight * texel;
+    vec3 offsetPoint = p + n * (0.25 * texel) + toLight * texel;
     vec4 clip = uLightViewProjection * vec4(offsetPoint, 1.0);
     if (clip.w <= 0.0) return 0.0;
-    vec3 ndc = clip.xyz / clip.w;
-    vec2 uv = ndc.xy * 0.5 + 0.5;
+    vec2 uv = clip.xy / clip.w * 0.5 + 0.5;
     if (any(lessThan(uv, vec2(0.0))) || any(greaterThan(uv, vec2(1.0)))) return 1.0;
+    vec2 size = vec2(textureSize(uShadowMap, 0));
+    vec3 centre = shadowMapPoint(offsetPoint, size);
+    // The depth of one texel along the light: the scale of the slope's limit (32 texels of depth
+    // per texel, about 88° from the light, where a surface receives 3 % of the light).
+    float texelDepth = abs(shadowMapPoint(offsetPoint + toLight * texel, size).z - centre.z);
+    vec2 slope = receiverDepthSlope(offsetPoint, n, texel, centre, size, 32.0 * texelDepth);
+    float margin = abs(slope.x) + abs(slope.y);
     // The filter: (2r + 1)² bilinear comparisons one texel apart, a box of 2r + 1 texels blurred
     // by the bilinear tent. Per axis that weighs the 2r + 2 texels around the point 1 − f, 1, …,
     // 1, f (f the point's fraction between texel centres); taken in pairs of neighbouring texels,
     // each pair is one bilinear comparison placed between them in proportion to their weights, so
     // (r + 1)² lookups give the same filter as (2r + 1)².
-    vec2 size = vec2(textureSize(uShadowMap, 0));
-    vec2 texelPoint = uv * size - 0.5;  // texel centres at integers
-    vec2 first = floor(texelPoint) - float(uPcfRadius), f = texelPoint - floor(texelPoint);
+    vec2 first = floor(centre.xy) - float(uPcfRadius), f = centre.xy - floor(centre.xy);
     float lit = 0.0;
     for (int y = 0; y <= uPcfRadius; ++y) {
         vec2 yPair = shadowTapPair(y, uPcfRadius, f.y);
         for (int x = 0; x <= uPcfRadius; ++x) {
             vec2 xPair = shadowTapPair(x, uPcfRadius, f.x);
             vec2 at = first + 2.0 * vec2(x, y) + vec2(xPair.x, yPair.x);
-            lit += xPair.y * yPair.y * texture(uShadowMap, vec3((at + 0.5) / size, ndc.z));
+            float surfaceDepth = centre.z + dot(slope, at - centre.xy) + margin;
+            lit += xPair.y * yPair.y * texture(uShadowMap, vec3((at + 0.5) / size, surfaceDepth));
         }
     }
     float taps = float((2 * uPcfRadius + 1) * (2 * uPcfRadius + 1));

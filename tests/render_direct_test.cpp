@@ -185,6 +185,52 @@ TEST(DirectLighting, FinerShadowMapSharpensTheShadowEdge) {
     EXPECT_NEAR(fine.halfLightZ, 0.5, 0.03);
 }
 
+// A wall lit at 15° from its plane under a ledge that sticks out 0.4 m at 2 m: the ledge shadows
+// the wall down to y = 2 − 0.4·cot 15° = 0.507 m. Moving a shadow lookup off the wall by a texel
+// (the usual normal offset against acne) lets it see past the ledge and lifts that edge by
+// cot 15° = 3.7 texels per texel; the edge must stay where the geometry puts it.
+TEST(DirectLighting, ALedgeShadowsAGrazingLitWallDownToWhereTheRaysSay) {
+    const auto dir = test::testDir();
+    test::ObjWriter obj;
+    obj.material("white", glm::vec3(0.6f));
+    obj.box({-1.5f, 0.0f, -0.2f}, {1.5f, 3.0f, 0.0f});  // the wall, its face at z = 0
+    obj.box({-1.5f, 2.0f, 0.0f}, {1.5f, 2.2f, 0.4f});   // the ledge
+    const auto model = obj.write(dir);
+    const double towardSun = glm::radians(15.0);
+    const double expectedEdge = 2.0 - 0.4 / std::tan(towardSun);
+    const double lit = 0.6 / glm::pi<double>() * 3.0 * std::sin(towardSun);
+    // The camera faces the wall from 4 m: row r of 96 shows height 1 + (0.5 − (r + ½)/96)·2·4·tan 25°.
+    auto heightAtRow = [](int row) { return 1.0 + (0.5 - (row + 0.5) / 96.0) * 8.0 * std::tan(glm::radians(25.0)); };
+    for (const char* shadowRes : {"256", "1024"}) {
+        const auto out = dir / (std::string("ledge") + shadowRes);
+        const auto result = test::runVct(
+            "render -q --scene " + model.string() + " --gi off --eye 0,1,4 --target 0,1,0 --fov 50 --width 96"
+            " --height 96 --sun-dir 0," + std::to_string(-std::cos(towardSun)) + "," + std::to_string(-std::sin(towardSun)) +
+            " --sun-irradiance 3 --aov direct --light-view-res 256 --shadow-res " + shadowRes + " --hdr-out " +
+            out.string() + ".pfm --out " + out.string() + ".png");
+        ASSERT_EQ(result.exitCode, 0) << result.output;
+        const ImageF image = readHdrImage(out.string() + ".pfm");
+        // Up the middle column from the wall's foot to the first row under half the lit value; the
+        // edge is where the light crosses one half between that row and the one below it.
+        double edge = 0.0;
+        for (int row = 94; row >= 0 && edge == 0.0; --row) {
+            const double below = image.at(48, row + 1)[0], here = image.at(48, row)[0];
+            if (heightAtRow(row + 1) < 0.2 || here >= 0.5 * lit) continue;
+            const double t = (below - 0.5 * lit) / (below - here);
+            edge = heightAtRow(row + 1) + t * (heightAtRow(row) - heightAtRow(row + 1));
+        }
+        std::printf("[ shadow   ] ledge over a wall lit at 15 degrees, %s² shadow map: edge at %.3f m (%.3f expected)\n",
+                    shadowRes, edge, expectedEdge);
+        EXPECT_NEAR(edge, expectedEdge, 0.03) << shadowRes;
+        // Under the edge the wall is lit everywhere, as much as Lambert says (no acne at 15°).
+        double darkest = lit;
+        for (int row = 0; row < 96; ++row)
+            if (heightAtRow(row) > 0.2 && heightAtRow(row) < 0.4)
+                for (int x = 24; x < 72; ++x) darkest = std::min(darkest, double(image.at(x, row)[0]));
+        EXPECT_GT(darkest, 0.98 * lit) << shadowRes;
+    }
+}
+
 TEST(DirectLighting, AlphaMaskedHolesLetTheSunThroughEitherShadowMap) {
     // A quad 1 m above the floor whose texture is transparent on its left half (x < 0): the sun
     // straight down lights the floor under that half and not under the other, whether the shadow
