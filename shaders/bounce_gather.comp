@@ -17,11 +17,15 @@ layout(std430, binding = SSBO_CELL_NORMAL) buffer CellNormal { uint cellNormal[]
 // The first bounce: (L₀·τ, τ) of every cell, then (N₀·τ, τ) of every cell; then the irradiance
 // gathered on both sides of every cell (written for first children, see below).
 layout(std430, binding = SSBO_BOUNCE_BASE) buffer BounceBase { vec4 bounceBase[]; };
+// Cells that gather their own (GATHER_LISTED reads them; its count is a list count).
+layout(std430, binding = SSBO_BOUNCE_LIST) buffer BounceList { uint ownGatherCells[]; };
 // To save cones, the cells that share a parent node with a cell of nearly the same normal share
 // its gather: the first pass (GATHER_FIRST_CHILDREN) gathers for the first child of every parent
 // and keeps its irradiance, the second (SHARE_WITH_SIBLINGS) gives each other cell that
 // irradiance when their normals agree within ~25° (cos ≥ kShareCosine; opposite normals share
-// with their sides swapped), and gathers its own otherwise (a corner, an edge of two surfaces).
+// with their sides swapped) and lists it otherwise (a corner, an edge of two surfaces), and the
+// third (GATHER_LISTED) gathers for the listed cells. Listing them first keeps every invocation
+// of a gather busy: scattered among cells that only copy, each would hold up its whole SIMD group.
 // Siblings lie within a voxel of each other and cones start 1.5 voxels off the surface, so a
 // shared gather differs from the cell's own by far less than the cones' own blur.
 const float kShareCosine = 0.9;
@@ -53,34 +57,38 @@ void main() {
     if (leaf >= uLevelCount[uLevels - 1]) return;
     uint node = nodeChild[uLevelStart[uLevels - 1] + leaf];
     uint cell = node - uLevelStart[uLevels];
-#else
+#elif defined(SHARE_WITH_SIBLINGS)
     uint cell = gl_GlobalInvocationID.x;
     if (cell >= cellCount) return;
     uint node = uLevelStart[uLevels] + cell;
     uint firstSibling = nodeChild[nodeParent[node]];
     if (firstSibling == node) return;
+#else  // GATHER_LISTED
+    uint listed = linearInvocation();
+    if (listed >= listCounts[BOUNCE_LIST_COUNT_SLOT]) return;
+    uint cell = ownGatherCells[listed];
+    uint node = uLevelStart[uLevels] + cell;
 #endif
     vec4 albedo = unpackUnorm4x8(cellAlbedo[cell]);
     vec3 normal = unpackNormal(cellNormal[cell]);
     vec3 irradiance[2];
-    bool own = true;
 #ifdef SHARE_WITH_SIBLINGS
     uint sibling = firstSibling - uLevelStart[uLevels];
     float agreement = dot(normal, unpackNormal(cellNormal[sibling]));
-    if (abs(agreement) >= kShareCosine) {
-        int flip = agreement < 0.0 ? 1 : 0;
-        irradiance[0] = bounceBase[2u * cellCount + 2u * sibling + uint(flip)].rgb;
-        irradiance[1] = bounceBase[2u * cellCount + 2u * sibling + uint(1 - flip)].rgb;
-        own = false;
+    if (abs(agreement) < kShareCosine) {
+        ownGatherCells[atomicAdd(listCounts[BOUNCE_LIST_COUNT_SLOT], 1u)] = cell;
+        return;
+    }
+    int flip = agreement < 0.0 ? 1 : 0;
+    irradiance[0] = bounceBase[2u * cellCount + 2u * sibling + uint(flip)].rgb;
+    irradiance[1] = bounceBase[2u * cellCount + 2u * sibling + uint(1 - flip)].rgb;
+#else
+    vec3 centre = vec3(unpackCell(nodeCoord[node])) + 0.5;
+    for (int side = 0; side < 2; ++side) {
+        vec3 n = side == 0 ? normal : -normal;
+        irradiance[side] = gatherIrradiance(centre + n * uConeOffset, n).rgb;
     }
 #endif
-    if (own) {
-        vec3 centre = vec3(unpackCell(nodeCoord[node])) + 0.5;
-        for (int side = 0; side < 2; ++side) {
-            vec3 n = side == 0 ? normal : -normal;
-            irradiance[side] = gatherIrradiance(centre + n * uConeOffset, n).rgb;
-        }
-    }
 #ifdef GATHER_FIRST_CHILDREN
     bounceBase[2u * cellCount + 2u * cell] = vec4(irradiance[0], 0.0);
     bounceBase[2u * cellCount + 2u * cell + 1u] = vec4(irradiance[1], 0.0);

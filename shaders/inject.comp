@@ -7,6 +7,7 @@ layout(local_size_x = 8, local_size_y = 8) in;
 #include "voxel_common.glsl"
 #include "octree.glsl"
 #include "radiance_common.glsl"
+#include "radiance_accumulators.glsl"
 
 layout(binding = TEXTURE_LIGHT_POSITION) uniform sampler2D uLightPosition;  // scene-local, w = 0: no surface
 layout(binding = TEXTURE_LIGHT_FLUX) uniform sampler2D uLightFlux;      // reflected flux per texel / the light's largest

@@ -1,12 +1,7 @@
 // Buffers of the radiance volume (engine/lighting/radiance_volume.hpp). Requires octree.glsl.
-// Touched counts per level from 0, border counts from BORDER_COUNT_SLOT, then missed photons.
+// Touched counts per level from 0, border counts from BORDER_COUNT_SLOT, then missed photons and
+// the cells that gather their own bounce (bounce_gather.comp).
 layout(std430, binding = SSBO_LIST_COUNTS) buffer ListCounts { uint listCounts[]; };
-// Per cell: reflected flux R, G, B as 64-bit fixed point (low, high words) [0..5]; the lit-side
-// normals of the photons summed as two's-complement integers × LIT_NORMAL_SCALE [6..8]; the
-// photon count [9].
-const uint ACCUMULATOR_WORDS = RADIANCE_ACCUMULATOR_WORDS;
-const float LIT_NORMAL_SCALE = 31.0;  // 2^31 / 31: 69 M photons per voxel before a sum could wrap
-layout(std430, binding = SSBO_RADIANCE_ACCUMULATORS) buffer RadianceAccumulators { uint radianceAccumulator[]; };
 layout(std430, binding = SSBO_TOUCHED_FLAG) buffer TouchedFlag { uint touchedFlag[]; };
 layout(std430, binding = SSBO_TOUCHED_LIST) buffer TouchedList { uint touchedList[]; };
 layout(std430, binding = SSBO_BORDER_FLAG) buffer BorderFlag { uint borderFlag[]; };
@@ -26,14 +21,6 @@ void touch(uint node, int level) {
         touchedList[uLevelStart[level] + slot] = node;
     }
 }
-
-// 64-bit fixed-point accumulation: low word, carry into the high word. Exact and
-// order-independent, so the result does not depend on thread scheduling.
-void accumulate64(uint index, uint value) {
-    uint old = atomicAdd(radianceAccumulator[index], value);
-    if (old + value < old) atomicAdd(radianceAccumulator[index + 1u], 1u);
-}
-
 
 // A slab's radiance for the pools: `seen` is what reaches its front face (mean over its cross-
 // section), `alpha` its opacity (1 − mean transmittance), `tau` its density, `length` its length

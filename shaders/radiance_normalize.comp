@@ -11,6 +11,7 @@ layout(local_size_x = 64) in;
 #include "voxel_common.glsl"
 #include "octree.glsl"
 #include "radiance_common.glsl"
+#include "radiance_accumulators.glsl"
 #include "work_list.glsl"
 
 layout(std430, binding = SSBO_CELL_VALUES) buffer CellAlbedo { uint cellAlbedo[]; };

@@ -42,6 +42,7 @@
     X(SSBO_CELL_DIRECTION, 23)                                                                    \
     X(SSBO_BOUNCE_BASE, 24)          /* bounce_gather: every cell's first-bounce radiance */      \
     X(SSBO_CELL_OPACITY, 25)                                                                      \
+    X(SSBO_BOUNCE_LIST, 26)          /* bounce_gather: cells that gather their own bounce */      \
     /* Image units (glBindImageTexture). */                                                       \
     X(IMAGE_FRAGMENTS, 0)            /* voxel-fragment list, RGBA32UI */                          \
     X(IMAGE_FRAGMENT_NODE, 1)        /* the node of each fragment, R32UI */                       \
@@ -87,7 +88,8 @@
     X(RADIANCE_ACCUMULATOR_WORDS, 10) /* inject: flux (3 × 64 bits), lit normal (3), count */     \
     X(BORDER_COUNT_SLOT, 12)         /* list counts: touched [0, 12), border [12, 24) */          \
     X(MISSED_COUNT_SLOT, 24)         /* list counts: photons that found no voxel */               \
-    X(LIST_COUNT_SLOTS, 25)
+    X(BOUNCE_LIST_COUNT_SLOT, 25)    /* list counts: cells that gather their own bounce */        \
+    X(LIST_COUNT_SLOTS, 26)
 // clang-format on
 
 #include "gl/gl.hpp"

@@ -1,12 +1,13 @@
 #include "lighting/bounce_gather.hpp"
 
-#include "lighting/list_dispatch.hpp"
+#include <algorithm>
 
 namespace vct {
 
 BounceGather::BounceGather()
     : gatherFirstChildren_(gl::buildProgram({{GL_COMPUTE_SHADER, "bounce_gather.comp"}}, {"GATHER_FIRST_CHILDREN 1"})),
-      shareWithSiblings_(gl::buildProgram({{GL_COMPUTE_SHADER, "bounce_gather.comp"}}, {"SHARE_WITH_SIBLINGS 1"})) {}
+      shareWithSiblings_(gl::buildProgram({{GL_COMPUTE_SHADER, "bounce_gather.comp"}}, {"SHARE_WITH_SIBLINGS 1"})),
+      gatherListed_(gl::buildProgram({{GL_COMPUTE_SHADER, "bounce_gather.comp"}}, {"GATHER_LISTED 1"})) {}
 
 void BounceGather::run(const Octree& octree, RadianceVolume& volume, RadianceFilter& filter, int bounces,
                        const ConeSettings& cones) {
@@ -14,25 +15,32 @@ void BounceGather::run(const Octree& octree, RadianceVolume& volume, RadianceFil
     const std::size_t half = cells * 16;  // one vec4 per cell
     if (baseBytes_ != 4 * half) {
         base_ = gl::createBuffer(GLsizeiptr(4 * half), nullptr, 0, "first-bounce radiance, gathered irradiance");
+        ownGatherCells_ = gl::createBuffer(GLsizeiptr(4 * std::max<std::size_t>(cells, 1)), nullptr, 0,
+                                           "cells that gather their own bounce");
         baseBytes_ = 4 * half;
     }
     glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);
     glCopyNamedBufferSubData(volume.cellRadiance.id(), base_.id(), 0, 0, GLsizeiptr(half));
     glCopyNamedBufferSubData(volume.cellDirection.id(), base_.id(), 0, GLintptr(half), GLsizeiptr(half));
+    constexpr GLbitfield kBarrier = GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT;
     for (int bounce = 2; bounce <= bounces; ++bounce) {
+        const std::uint32_t zero = 0;
+        glNamedBufferSubData(volume.listCounts.id(), GLintptr(4 * gl::BOUNCE_LIST_COUNT_SLOT), 4, &zero);
         // First children (one per leaf node), then their siblings (one per cell), which read what
-        // the first children gathered.
-        for (const gl::Program* program : {&gatherFirstChildren_, &shareWithSiblings_}) {
-            const std::size_t invocations = program == &gatherFirstChildren_ ? octree.leafCount() : cells;
-            gl::ComputeCall call(*program);
+        // the first children gathered or list themselves, then the listed cells.
+        auto prepare = [&](const gl::Program& program) {
+            gl::ComputeCall call(program);
             setConeMarchUniforms(call, octree, volume, cones);
             bindRadianceVolume(volume);
             call.storage(gl::SSBO_CELL_VALUES, octree.cellAlbedo)
                 .storage(gl::SSBO_CELL_NORMAL, octree.cellNormal)
                 .storage(gl::SSBO_BOUNCE_BASE, base_)
-                .dispatch1D(std::uint32_t(invocations), 64,
-                            GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT);
-        }
+                .storage(gl::SSBO_BOUNCE_LIST, ownGatherCells_);
+            return call;
+        };
+        prepare(gatherFirstChildren_).dispatch1D(std::uint32_t(octree.leafCount()), 64, kBarrier);
+        prepare(shareWithSiblings_).dispatch1D(std::uint32_t(cells), 64, kBarrier);
+        listDispatch_.dispatch(prepare(gatherListed_), volume, gl::BOUNCE_LIST_COUNT_SLOT, kBarrier);
         filter.leaves(octree, volume);
         filter.mip(octree, volume);
     }

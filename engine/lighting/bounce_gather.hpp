@@ -6,8 +6,9 @@
 // (RadianceFilter): after N − 1 of these the bricks hold N bounces. The voxels' own radiance is
 // put back to the first bounce at the end, so that the radiance filter alone (after a change of
 // the bounce count) gives one bounce again. Cells whose parent's first child has nearly their
-// normal take that child's gathered irradiance instead of gathering their own.
+// normal take that child's gathered irradiance; the others are listed and gather their own.
 #include "gl/objects.hpp"
+#include "lighting/list_dispatch.hpp"
 #include "lighting/radiance_filter.hpp"
 #include "render/cone_trace.hpp"
 
@@ -25,7 +26,9 @@ public:
     std::size_t bytes() const { return baseBytes_; }
 
 private:
-    gl::Program gatherFirstChildren_, shareWithSiblings_;
+    gl::Program gatherFirstChildren_, shareWithSiblings_, gatherListed_;
+    ListDispatch listDispatch_;
+    gl::Buffer ownGatherCells_;  // the cells that gather their own, one uint each
     // The first bounce, (L·τ, τ) then (N·τ, τ) of every cell, then the irradiance on both sides
     // of every cell (written for first children).
     gl::Buffer base_;

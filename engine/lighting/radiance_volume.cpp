@@ -19,7 +19,7 @@ void allocateRadianceVolume(const Octree& octree, RadianceVolume& v) {
     v.borderFlag = gl::createBuffer(GLsizeiptr(nodes) * 4, nullptr, dynamic, "border flags");
     v.borderList = gl::createBuffer(GLsizeiptr(nodes) * 4, nullptr, dynamic, "border lists");
     v.listCounts = gl::createBuffer(gl::LIST_COUNT_SLOTS * 4, nullptr, dynamic, "radiance list counts");
-    v.indirectArgs = gl::createBuffer(3 * 4 * 2 * (kMaxOctreeLevels + 1), nullptr, dynamic, "radiance dispatch args");
+    v.indirectArgs = gl::createBuffer(3 * 4 * gl::LIST_COUNT_SLOTS, nullptr, dynamic, "radiance dispatch args");
     const char* labels[6] = {"radiance pool +x", "radiance pool -x", "radiance pool +y",
                              "radiance pool -y", "radiance pool +z", "radiance pool -z"};
     for (int i = 0; i < 6; ++i) v.directional[i] = createBrickPool(octree.brickPoolBricks, GL_RGBA32F, labels[i]);

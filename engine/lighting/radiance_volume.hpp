@@ -28,7 +28,7 @@ struct RadianceVolume {
     // neighbourhood): the nodes whose samples can be other than zero.
     gl::Buffer touchedFlag, touchedList;
     gl::Buffer borderFlag, borderList;
-    gl::Buffer listCounts;    // uints: touched counts per level, border counts per level, photons missed
+    gl::Buffer listCounts;    // uints: touched counts per level, border counts per level, photons missed, own bounce gathers
     gl::Buffer indirectArgs;  // dispatch arguments, 3 uints per slot
 
     // What each brick sample's slab sends towards a cone travelling along +x, −x, +y, −y, +z, −z
