@@ -15,9 +15,9 @@ void BounceGather::run(const Octree& octree, RadianceVolume& volume, RadianceFil
     const std::size_t half = cells * 16;  // one vec4 per cell
     if (baseBytes_ != 4 * half) {
         base_ = gl::createBuffer(GLsizeiptr(4 * half), nullptr, 0, "first-bounce radiance, gathered irradiance");
-        ownGatherCells_ = gl::createBuffer(GLsizeiptr(4 * std::max<std::size_t>(cells, 1)), nullptr, 0,
-                                           "cells that gather their own bounce");
         baseBytes_ = 4 * half;
+        listBytes_ = 4 * std::max<std::size_t>(cells, 1);
+        ownGatherCells_ = gl::createBuffer(GLsizeiptr(listBytes_), nullptr, 0, "cells that gather their own bounce");
     }
     glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);
     glCopyNamedBufferSubData(volume.cellRadiance.id(), base_.id(), 0, 0, GLsizeiptr(half));

@@ -23,16 +23,16 @@ public:
     // `cones`: the cone set of the gather (the camera's settings, so that every bounce is gathered alike).
     void run(const Octree& octree, RadianceVolume& volume, RadianceFilter& filter, int bounces,
              const ConeSettings& cones);
-    std::size_t bytes() const { return baseBytes_; }
+    std::size_t bytes() const { return baseBytes_ + listBytes_; }
 
 private:
     gl::Program gatherFirstChildren_, shareWithSiblings_, gatherListed_;
     ListDispatch listDispatch_;
-    gl::Buffer ownGatherCells_;  // the cells that gather their own, one uint each
     // The first bounce, (L·τ, τ) then (N·τ, τ) of every cell, then the irradiance on both sides
     // of every cell (written for first children).
     gl::Buffer base_;
-    std::size_t baseBytes_ = 0;
+    gl::Buffer ownGatherCells_;  // the cells that gather their own (SHARE_WITH_SIBLINGS lists them), one uint each
+    std::size_t baseBytes_ = 0, listBytes_ = 0;
 };
 
 }  // namespace vct

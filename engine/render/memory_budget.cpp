@@ -51,8 +51,9 @@ std::size_t estimateVoxelBytes(const Scene& scene, int levels, bool radiance, bo
     // Radiance: accumulators, cell radiance and direction, flags; per node flags and lists and the
     // six radiance pools of 27 RGBA32F samples (brick_layout.hpp, "Slabs").
     if (radiance) bytes += cells * (40 + 16 + 16 + 8) + nodes * (8 + 8 + 6 * 27 * 16);
-    // The first bounce's radiance and direction, and the irradiance first children gather (bounce_gather).
-    if (radiance && bounces) bytes += cells * 64;
+    // The first bounce's radiance and direction, the irradiance first children gather and the list
+    // of cells that gather their own (bounce_gather).
+    if (radiance && bounces) bytes += cells * (64 + 4);
     return std::size_t(bytes * 1.1);  // brick pools are rounded up to whole rows and slabs
 }
 
