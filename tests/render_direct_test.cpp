@@ -332,6 +332,22 @@ TEST(DirectLighting, TimingsJsonListsEveryPassOfTheGiFrame) {
     }
 }
 
+TEST(DirectLighting, TimingsJsonCountsTheVoxelsThatGatherTheirOwnBounce) {
+    // Cornell's corners and box edges hold voxels whose first sibling faces another way: they
+    // gather their own bounce; flat walls share. One bounce gathers nothing.
+    const auto one = renderTimings("--voxel-levels 6");
+    EXPECT_EQ(one["statistics"]["bounce_own_gathers"], 0);
+    const auto two = renderTimings("--voxel-levels 6 --bounces 2");
+    const std::uint32_t own = two["statistics"]["bounce_own_gathers"];
+    const std::uint32_t voxels = two["voxels"]["nodes_per_level"].back();
+    const std::uint32_t leafNodes = two["voxels"]["nodes_per_level"][5];
+    std::printf("[ bounce   ] Cornell 64^3: %u of %u voxels gather their own bounce (%u leaf nodes gather for their first child)\n",
+                own, voxels, leafNodes);
+    EXPECT_EQ(two["statistics"]["bounces_gathered"], 1);
+    EXPECT_GT(own, 0u);
+    EXPECT_LT(own, (voxels - leafNodes) / 2);
+}
+
 TEST(DirectLighting, TimingsJsonListsEveryPass) {
     const auto timings = renderTimings("--gi off --full-frames --frames 2");
     EXPECT_EQ(timings["backend"], gl::defaultBackendName());  // osmesa unless VCT_BACKEND says otherwise

@@ -51,4 +51,11 @@ void BounceGather::run(const Octree& octree, RadianceVolume& volume, RadianceFil
     gl::checkErrors("gathering further bounces");
 }
 
+std::uint32_t BounceGather::ownGathers(const RadianceVolume& volume) const {
+    std::uint32_t count = 0;
+    glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+    glGetNamedBufferSubData(volume.listCounts.id(), GLintptr(4 * gl::BOUNCE_LIST_COUNT_SLOT), 4, &count);
+    return count;
+}
+
 }  // namespace vct

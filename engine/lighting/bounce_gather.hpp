@@ -24,6 +24,8 @@ public:
     void run(const Octree& octree, RadianceVolume& volume, RadianceFilter& filter, int bounces,
              const ConeSettings& cones);
     std::size_t bytes() const { return baseBytes_ + listBytes_; }
+    // How many voxels of the last bounce gathered their own (read back from the GPU: statistics).
+    std::uint32_t ownGathers(const RadianceVolume& volume) const;
 
 private:
     gl::Program gatherFirstChildren_, shareWithSiblings_, gatherListed_;

@@ -30,6 +30,7 @@ struct FrameStatistics {
     std::vector<std::uint32_t> nodesPerLevel;
     std::uint32_t photonsMissed = 0;
     std::uint32_t bouncesGathered = 0;                         // further bounces the bounce pass added
+    std::uint32_t bounceOwnGathers = 0;  // voxels of the last bounce that could not share a sibling's gather
     ConeStatistics cones;
 };
 

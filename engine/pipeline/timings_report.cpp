@@ -81,6 +81,7 @@ void writeTimingsJson(const std::filesystem::path& path, const TimingsReport& re
                           {"nodes_per_level", s.nodesPerLevel},
                           {"photons_missed", s.photonsMissed},
                           {"bounces_gathered", s.bouncesGathered},
+                          {"bounce_own_gathers", s.bounceOwnGathers},
                           {"cone_samples", s.cones.samples},
                           {"cone_samples_saved_by_empty_space_skipping", s.cones.samplesSaved},
                           {"sky_pixels_without_gi_work", s.cones.skyPixels},
