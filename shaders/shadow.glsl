@@ -47,12 +47,10 @@ vec2 receiverDepthSlope(vec3 p, vec3 n, float step, vec3 centre, vec2 size, floa
 float shadowVisibility(vec3 p, vec3 n, vec3 toLight, float distanceToLight) {
     float texel = uShadowTexelSize * (uShadowPerspective != 0 ? distanceToLight : 1.0);
     vec3 offsetPoint = p + n * (0.25 * texel) + toLight * texel;
-    vec4 clip = uLightViewProjection * vec4(offsetPoint, 1.0);
-    if (clip.w <= 0.0) return 0.0;
-    vec2 uv = clip.xy / clip.w * 0.5 + 0.5;
-    if (any(lessThan(uv, vec2(0.0))) || any(greaterThan(uv, vec2(1.0)))) return 1.0;
+    if ((uLightViewProjection * vec4(offsetPoint, 1.0)).w <= 0.0) return 0.0;  // behind a spot light
     vec2 size = vec2(textureSize(uShadowMap, 0));
     vec3 centre = shadowMapPoint(offsetPoint, size);
+    if (any(lessThan(centre.xy, vec2(-0.5))) || any(greaterThan(centre.xy, size - 0.5))) return 1.0;
     // The depth of one texel along the light: the scale of the slope's limit (32 texels of depth
     // per texel, about 88° from the light, where a surface receives 3 % of the light).
     float texelDepth = abs(shadowMapPoint(offsetPoint + toLight * texel, size).z - centre.z);
