@@ -339,8 +339,8 @@ TEST(DirectLighting, TimingsJsonCountsTheVoxelsThatGatherTheirOwnBounce) {
     EXPECT_EQ(one["statistics"]["bounce_own_gathers"], 0);
     const auto two = renderTimings("--voxel-levels 6 --bounces 2");
     const std::uint32_t own = two["statistics"]["bounce_own_gathers"];
-    const std::uint32_t voxels = two["voxels"]["nodes_per_level"].back();
-    const std::uint32_t leafNodes = two["voxels"]["nodes_per_level"][5];
+    const auto& nodesPerLevel = two["voxels"]["nodes_per_level"];
+    const std::uint32_t voxels = nodesPerLevel.back(), leafNodes = nodesPerLevel[nodesPerLevel.size() - 2];
     std::printf("[ bounce   ] Cornell 64^3: %u of %u voxels gather their own bounce (%u leaf nodes gather for their first child)\n",
                 own, voxels, leafNodes);
     EXPECT_EQ(two["statistics"]["bounces_gathered"], 1);

@@ -130,7 +130,7 @@ void gatherBounces(FrameResources& f) {
     f.bounces->run(f.svo->octree(), *f.radiance, *f.radianceFilter, f.settings.bounces, frameCones(f.settings));
     f.radianceBounces = f.settings.bounces;
     f.statistics.bouncesGathered = std::uint32_t(f.settings.bounces - 1);
-    f.statistics.bounceOwnGathers = f.settings.bounces > 1 ? f.bounces->ownGathers(*f.radiance) : 0;
+    f.statistics.bounceOwnGathers = f.bounces->ownGathers(*f.radiance);
 }
 
 void traceCones(FrameResources& f, const FrameView& v) {
