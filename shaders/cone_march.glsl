@@ -7,13 +7,14 @@
 #include "voxel_common.glsl"
 #include "octree.glsl"
 #include "bricks_common.glsl"
+#include "directional_pool.glsl"
 #include "octree_march.glsl"
 #include "cone_spread.glsl"
 
 // What lies ahead of each brick sample along each of the six axis directions (brick_layout.hpp,
-// "Slabs"), one pool per direction: the radiance that reaches the sample and the slab's density,
+// "Slabs"; directional_pool.glsl): the radiance that reaches the sample and the slab's density,
 // (L·τ, τ); the density of the geometry everywhere, radiance only near light.
-layout(binding = TEXTURE_DIRECTIONAL_RADIANCE) uniform sampler3D uDirectional[6];
+layout(binding = TEXTURE_DIRECTIONAL_RADIANCE) uniform sampler3D uDirectional;
 // Samples this invocation took, and those empty-space skipping saved (cone_trace counts them).
 uint samplesTaken = 0u, samplesSaved = 0u;
 
@@ -107,10 +108,10 @@ uint slabAheadOfEmpty(int level, vec3 p, uvec3 cell, uint known, int knownLevel,
 vec4 sampleLevel(uint node, int level, uint finer, vec3 p, uvec3 cell, uint known, int knownLevel) {
     vec3 inNode = node != NONE ? brickPosition(node, level, p) : vec3(0.0);
     vec3 inFiner = finer != NONE ? brickPosition(finer, level + 1, p) : inNode;
-    vec3 poolSize = vec3(textureSize(uDirectional[0], 0));
+    vec3 poolSize = vec3(textureSize(uDirectional, 0));
     vec4 value = vec4(0.0);
-    // Every direction in turn, with one lookup site, so that which pool is read is the same in
-    // every invocation.
+    // Every direction in turn, with one lookup site (llvmpipe: a second site of the same texture
+    // in another branch read zeros).
     for (int i = 0; i < 6; ++i) {
         int a = i >> 1;
         bool along = (i & 1) == 0;
@@ -127,7 +128,7 @@ vec4 sampleLevel(uint node, int level, uint finer, vec3 p, uvec3 cell, uint know
         if (holder == NONE) continue;  // empty space ahead
         float weight = along ? coneAlongPlus[a] : coneAlongMinus[a];
         vec3 sampleAt = uUseBricks != 0 ? at : round(at);
-        value += weight * texture(uDirectional[i], (vec3(brickOrigin(holder)) + 0.5 + sampleAt) / poolSize);
+        value += weight * texture(uDirectional, (vec3(directionalBrickOrigin(holder, i)) + 0.5 + sampleAt) / poolSize);
     }
     return value;
 }

@@ -7,10 +7,11 @@ layout(local_size_x = 64) in;
 #include "voxel_common.glsl"
 #include "octree.glsl"
 #include "bricks_common.glsl"
+#include "directional_pool.glsl"
 
 layout(binding = TEXTURE_OPACITY_PLUS) uniform sampler3D uOpacityPlus;
 layout(binding = TEXTURE_OPACITY_MINUS) uniform sampler3D uOpacityMinus;
-layout(rgba32f, binding = IMAGE_DIRECTIONAL_RADIANCE) uniform writeonly image3D uDirectional[6];
+layout(rgba32f, binding = IMAGE_DIRECTIONAL_RADIANCE) uniform writeonly image3D uDirectional;
 
 uniform uint uNodeCount;
 
@@ -19,11 +20,11 @@ void main() {
     if (node >= uNodeCount) return;
     ivec3 origin = brickOrigin(node);
     for (int s = 0; s < 27; ++s) {
-        ivec3 texel = origin + ivec3(s % 3, (s / 3) % 3, s / 9);
-        vec3 plus = texelFetch(uOpacityPlus, texel, 0).xyz, minus = texelFetch(uOpacityMinus, texel, 0).xyz;
+        ivec3 local = ivec3(s % 3, (s / 3) % 3, s / 9);
+        vec3 plus = texelFetch(uOpacityPlus, origin + local, 0).xyz, minus = texelFetch(uOpacityMinus, origin + local, 0).xyz;
         for (int a = 0; a < 3; ++a) {
-            imageStore(uDirectional[2 * a], texel, vec4(0.0, 0.0, 0.0, plus[a]));
-            imageStore(uDirectional[2 * a + 1], texel, vec4(0.0, 0.0, 0.0, minus[a]));
+            imageStore(uDirectional, directionalBrickOrigin(node, 2 * a) + local, vec4(0.0, 0.0, 0.0, plus[a]));
+            imageStore(uDirectional, directionalBrickOrigin(node, 2 * a + 1) + local, vec4(0.0, 0.0, 0.0, minus[a]));
         }
     }
 }

@@ -12,6 +12,7 @@ layout(local_size_x = 64) in;
 #include "voxel_common.glsl"
 #include "octree.glsl"
 #include "bricks_common.glsl"
+#include "directional_pool.glsl"
 #include "radiance_common.glsl"
 #include "work_list.glsl"
 #include "brick_gather.glsl"
@@ -20,7 +21,7 @@ layout(local_size_x = 64) in;
 layout(std430, binding = SSBO_CELL_OPACITY) buffer CellOpacity { uint cellOpacity[]; };  // RGBA8 (αx, αy, αz, α)
 layout(binding = TEXTURE_OPACITY_PLUS) uniform sampler3D uOpacityPlus;
 layout(binding = TEXTURE_OPACITY_MINUS) uniform sampler3D uOpacityMinus;
-layout(rgba32f, binding = IMAGE_DIRECTIONAL_RADIANCE) uniform writeonly image3D uDirectional[6];
+layout(rgba32f, binding = IMAGE_DIRECTIONAL_RADIANCE) uniform writeonly image3D uDirectional;
 layout(std430, binding = SSBO_CELL_EMISSIVE) buffer CellEmissive { vec4 cellEmissive[]; };
 uniform int uHasEmissive;
 
@@ -66,7 +67,7 @@ void main() {
                         transmittance += 0.25 * (1.0 - opacity[v][a]);
                     }
                     float tau = (i & 1) == 0 ? tauPlus[a] : tauMinus[a];
-                    imageStore(uDirectional[i], origin + q, slabRadiance(seen, 1.0 - transmittance, tau, 1.0));
+                    imageStore(uDirectional, directionalBrickOrigin(node, i) + q, slabRadiance(seen, 1.0 - transmittance, tau, 1.0));
                 }
             }
 }

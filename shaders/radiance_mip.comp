@@ -10,13 +10,14 @@ layout(local_size_x = 64) in;
 #include "voxel_common.glsl"
 #include "octree.glsl"
 #include "bricks_common.glsl"
+#include "directional_pool.glsl"
 #include "radiance_common.glsl"
 #include "work_list.glsl"
 #include "brick_gather.glsl"
 
 layout(binding = TEXTURE_OPACITY_PLUS) uniform sampler3D uOpacityPlus;    // (τ+x, τ+y, τ+z, ·)
 layout(binding = TEXTURE_OPACITY_MINUS) uniform sampler3D uOpacityMinus;  // (τ−x, τ−y, τ−z, ·)
-layout(rgba32f, binding = IMAGE_DIRECTIONAL_RADIANCE) uniform coherent image3D uDirectional[6];
+layout(rgba32f, binding = IMAGE_DIRECTIONAL_RADIANCE) uniform coherent image3D uDirectional;
 
 void main() {
     bool valid;
@@ -31,8 +32,9 @@ void main() {
         for (int j = 0; j < 3; ++j)
             for (int x = 0; x < 3; ++x) {
                 ivec3 q = ivec3(x, j, k);
-                // Where the 27 child samples around 2Q lie in the pools, index (d + 1) · (1, 3, 9);
-                // w = 0 where no child holds one. Only their places are kept (not the six pools' values,
+                // Where the 27 child samples around 2Q lie in the pool's +x bricks (the other
+                // directions' lie a fixed offset along z), index (d + 1) · (1, 3, 9); w = 0 where no
+                // child holds one. Only their places are kept (not the six directions' values,
                 // which are read as each direction needs them): a small array, since run-time-indexed
                 // local arrays are slow on some drivers (llvmpipe spills them).
                 ivec4 texels[27];
@@ -40,11 +42,12 @@ void main() {
                     uint child;
                     ivec3 local;
                     bool found = childSampleAt(children, 2 * q + ivec3(o % 3, (o / 3) % 3, o / 9) - 1, child, local);
-                    texels[o] = ivec4(found ? brickOrigin(child) + local : ivec3(0), found ? 1 : 0);
+                    texels[o] = ivec4(found ? directionalBrickOrigin(child, 0) + local : ivec3(0), found ? 1 : 0);
                 }
                 vec4 tauPlus = texelFetch(uOpacityPlus, origin + q, 0), tauMinus = texelFetch(uOpacityMinus, origin + q, 0);
                 for (int i = 0; i < 6; ++i) {
                     int a = i >> 1;
+                    ivec3 direction = directionOffset(i);
                     int ahead = (i & 1) == 0 ? aroundStride(a) : -aroundStride(a);
                     vec3 total = vec3(0.0);
                     float meanTransmittance = 0.0;
@@ -54,8 +57,8 @@ void main() {
                             int back = front + ahead;
                             // The child slab at each: (L·τ, τ), the density of unlit geometry too
                             // (radiance_clear.comp): it sends L·α and lets 1 − α through.
-                            vec4 frontStored = texels[front].w != 0 ? imageLoad(uDirectional[i], texels[front].xyz) : vec4(0.0);
-                            vec4 backStored = texels[back].w != 0 ? imageLoad(uDirectional[i], texels[back].xyz) : vec4(0.0);
+                            vec4 frontStored = texels[front].w != 0 ? imageLoad(uDirectional, texels[front].xyz + direction) : vec4(0.0);
+                            vec4 backStored = texels[back].w != 0 ? imageLoad(uDirectional, texels[back].xyz + direction) : vec4(0.0);
                             float frontAlpha = 1.0 - exp(-frontStored.a * hChild);
                             float backAlpha = 1.0 - exp(-backStored.a * hChild);
                             vec3 frontSeen = frontStored.a > 0.0 ? frontStored.rgb * (frontAlpha / frontStored.a) : vec3(0.0);
@@ -65,7 +68,7 @@ void main() {
                             meanTransmittance += weight * (1.0 - frontAlpha) * (1.0 - backAlpha);
                         }
                     float tau = (i & 1) == 0 ? tauPlus[a] : tauMinus[a];
-                    imageStore(uDirectional[i], origin + q, slabRadiance(total, 1.0 - meanTransmittance, tau, 2.0 * hChild));
+                    imageStore(uDirectional, directionalBrickOrigin(node, i) + q, slabRadiance(total, 1.0 - meanTransmittance, tau, 2.0 * hChild));
                 }
             }
 }

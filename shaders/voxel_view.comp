@@ -10,6 +10,7 @@ layout(local_size_x = 8, local_size_y = 8) in;
 #include "voxel_common.glsl"
 #include "octree.glsl"
 #include "bricks_common.glsl"
+#include "directional_pool.glsl"
 #include "octree_march.glsl"
 
 layout(rgba32f, binding = IMAGE_VOXEL_VIEW) uniform writeonly image2D uOutput;
@@ -19,7 +20,7 @@ layout(std430, binding = SSBO_RAW_VALUE) buffer RawValue { vec4 rawValue[]; };
 // The radiance view: the voxels' radiance, and for nodes the mean over the six directions of the
 // radiance their bricks' slabs send (brick_layout.hpp, "Slabs").
 layout(std430, binding = SSBO_CELL_RADIANCE) buffer CellRadiance { vec4 cellRadiance[]; };
-layout(binding = TEXTURE_DIRECTIONAL_RADIANCE) uniform sampler3D uDirectional[6];
+layout(binding = TEXTURE_DIRECTIONAL_RADIANCE) uniform sampler3D uDirectional;  // directional_pool.glsl
 
 uniform vec3 uEyeVoxel;      // camera position in voxel space
 uniform vec3 uForward, uRight, uUp;  // camera basis (voxel space = scaled scene-local, same directions)
@@ -30,10 +31,10 @@ uniform int uShowRadiance;   // radiance instead of albedo: no face shading
 
 // Radiance L of node `node` at brick position `inBrick` (texels from the brick's first sample).
 vec3 nodeRadiance(uint node, vec3 inBrick) {
-    vec3 uvw = (vec3(brickOrigin(node)) + inBrick) / vec3(textureSize(uDirectional[0], 0));
+    vec3 poolSize = vec3(textureSize(uDirectional, 0));
     vec3 sum = vec3(0.0);
     for (int i = 0; i < 6; ++i) {
-        vec4 d = texture(uDirectional[i], uvw);
+        vec4 d = texture(uDirectional, (vec3(directionalBrickOrigin(node, i)) + inBrick) / poolSize);
         if (d.a > 1e-6) sum += d.rgb / d.a;
     }
     return sum / 6.0;

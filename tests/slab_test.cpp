@@ -349,14 +349,14 @@ TEST(Slabs, RadianceSeenFromTheDarkSideOfAWallIsDark) {
     EXPECT_NEAR(cellMean, expected, 0.1 * expected) << "the wall's cells are lit";
     std::printf("[ slabs    ] lit wall: cell radiance %.4f (ρ/π·E·cos θ = %.4f)\n", cellMean, expected);
 
-    std::array<std::vector<float>, 6> pools;  // +x −x +y −y +z −z
-    for (int i = 0; i < 6; ++i) pools[i] = readBrickPool(volume.directional[i], octree.brickPoolBricks);
-    auto radianceAt = [&](int pool, std::uint32_t node, int s, double& tau) {
+    // The six directions' bricks (+x −x +y −y +z −z), stacked along z (directional_pool.glsl).
+    const glm::ivec3 bricks = volume.directionalBricks, size = 3 * bricks * glm::ivec3(1, 1, 6);
+    const std::vector<float> pool = readBrickPool(volume.directional, bricks * glm::ivec3(1, 1, 6));
+    auto radianceAt = [&](int direction, std::uint32_t node, int s, double& tau) {
         const int b = int(node);
-        const glm::ivec3 bricks = octree.brickPoolBricks, size = 3 * bricks;
         const glm::ivec3 t = 3 * glm::ivec3(b % bricks.x, (b / bricks.x) % bricks.y, b / (bricks.x * bricks.y)) +
-                             glm::ivec3(s % 3, (s / 3) % 3, s / 9);
-        const float* texel = &pools[pool][((std::size_t(t.z) * size.y + t.y) * size.x + t.x) * 4];
+                             glm::ivec3(0, 0, 3 * direction * bricks.z) + glm::ivec3(s % 3, (s / 3) % 3, s / 9);
+        const float* texel = &pool[((std::size_t(t.z) * size.y + t.y) * size.x + t.x) * 4];
         tau = texel[3];
         return tau > 0.0 ? (double(texel[0]) + texel[1] + texel[2]) / 3.0 / tau : 0.0;  // L = rgb / a
     };

@@ -56,8 +56,7 @@ std::vector<std::pair<std::string, std::vector<std::uint8_t>>> snapshot(const Sc
     buffer("photon sums", r.accumulators, std::size_t(o.cellCount()) * 4 * kAccumulatorWords);
     buffer("cell radiance", r.cellRadiance, std::size_t(o.cellCount()) * 16);
     buffer("cell radiance direction", r.cellDirection, std::size_t(o.cellCount()) * 16);
-    for (int i = 0; i < 6; ++i)
-        texture(("radiance bricks " + std::to_string(i)).c_str(), r.directional[i].id(), o.brickPoolBricks);
+    texture("radiance bricks", r.directional.id(), r.directionalBricks * glm::ivec3(1, 1, 6));
     for (Aov aov : {Aov::Final, Aov::Indirect}) {
         settings.display.aov = aov;
         renderer.setSettings(settings);

@@ -53,7 +53,7 @@
     X(IMAGE_BRICK_POOL, 1)                                                                        \
     X(IMAGE_OPACITY_PLUS, 1)         /* bricks_opacity: the pool of slabs along +x +y +z */       \
     X(IMAGE_OPACITY_MINUS, 2)        /* and along −x −y −z */                                     \
-    X(IMAGE_DIRECTIONAL_RADIANCE, 2) /* the six radiance pools, units 2..7 (+x −x +y −y +z −z) */  \
+    X(IMAGE_DIRECTIONAL_RADIANCE, 2) /* the radiance pool of the six directions */                \
     X(IMAGE_DIRECT, 0)                                                                            \
     X(IMAGE_INDIRECT, 0)                                                                          \
     X(IMAGE_TRACED_PIXEL, 1)         /* cone_trace at half resolution: the pixel each block traced */ \
@@ -73,7 +73,7 @@
     X(TEXTURE_INDIRECT, 6)                                                                        \
     X(TEXTURE_OPACITY_PLUS, 3)       /* opacity of the slabs along +x +y +z (brick_layout.hpp) */ \
     X(TEXTURE_OPACITY_MINUS, 4)      /* along −x −y −z */                                         \
-    X(TEXTURE_DIRECTIONAL_RADIANCE, 6) /* the six radiance pools, units 6..11 */                  \
+    X(TEXTURE_DIRECTIONAL_RADIANCE, 6) /* the radiance pool of the six directions */              \
     X(TEXTURE_TRACED_IRRADIANCE, 12) /* cone_upsample: what cone_trace gathered per block */     \
     X(TEXTURE_TRACED_PIXEL, 13)      /* cone_upsample: the pixel each block traced */             \
     X(TEXTURE_VIEW_ALBEDO_BRICKS, 1) /* voxel_view: the albedo pool */                     \

@@ -28,8 +28,7 @@ void RadianceFilter::leaves(const Octree& octree, RadianceVolume& volume) {
     clear.uniform("uNodeCount", octree.nodeCount)
         .texture(gl::TEXTURE_OPACITY_PLUS, octree.brickOpacityPlus.id())
         .texture(gl::TEXTURE_OPACITY_MINUS, octree.brickOpacityMinus.id());
-    for (int i = 0; i < 6; ++i)
-        clear.image(gl::IMAGE_DIRECTIONAL_RADIANCE + i, volume.directional[i].id(), GL_WRITE_ONLY, GL_RGBA32F, true);
+    bindDirectionalImage(clear, volume, GL_WRITE_ONLY);
     clear.dispatch1D(octree.nodeCount, 64, kBarrier);
 
     for (int level = octree.levels - 1; level >= 0; --level)
@@ -45,8 +44,7 @@ void RadianceFilter::leaves(const Octree& octree, RadianceVolume& volume) {
         .texture(gl::TEXTURE_OPACITY_PLUS, octree.brickOpacityPlus.id())
         .texture(gl::TEXTURE_OPACITY_MINUS, octree.brickOpacityMinus.id());
     if (octree.hasEmissive) call.storage(gl::SSBO_CELL_EMISSIVE, octree.cellEmissive);
-    for (int i = 0; i < 6; ++i)
-        call.image(gl::IMAGE_DIRECTIONAL_RADIANCE + i, volume.directional[i].id(), GL_WRITE_ONLY, GL_RGBA32F, true);
+    bindDirectionalImage(call, volume, GL_WRITE_ONLY);
     listDispatch_.dispatch(call, volume, kBorderCountSlot + unsigned(leafLevel), kBarrier);
     gl::checkErrors("filling the leaves' radiance bricks");
 }
@@ -56,8 +54,7 @@ void RadianceFilter::mip(const Octree& octree, RadianceVolume& volume) {
         gl::ComputeCall call = over(mip_, octree, volume, level);
         call.texture(gl::TEXTURE_OPACITY_PLUS, octree.brickOpacityPlus.id())
             .texture(gl::TEXTURE_OPACITY_MINUS, octree.brickOpacityMinus.id());
-        for (int i = 0; i < 6; ++i)
-            call.image(gl::IMAGE_DIRECTIONAL_RADIANCE + i, volume.directional[i].id(), GL_READ_WRITE, GL_RGBA32F, true);
+        bindDirectionalImage(call, volume, GL_READ_WRITE);
         listDispatch_.dispatch(call, volume, kBorderCountSlot + unsigned(level), kBarrier);
     }
     gl::checkErrors("filtering radiance up the octree by direction");

@@ -20,15 +20,24 @@ void allocateRadianceVolume(const Octree& octree, RadianceVolume& v) {
     v.borderList = gl::createBuffer(GLsizeiptr(nodes) * 4, nullptr, dynamic, "border lists");
     v.listCounts = gl::createBuffer(gl::LIST_COUNT_SLOTS * 4, nullptr, dynamic, "radiance list counts");
     v.indirectArgs = gl::createBuffer(3 * 4 * gl::LIST_COUNT_SLOTS, nullptr, dynamic, "radiance dispatch args");
-    const char* labels[6] = {"radiance pool +x", "radiance pool -x", "radiance pool +y",
-                             "radiance pool -y", "radiance pool +z", "radiance pool -z"};
-    for (int i = 0; i < 6; ++i) v.directional[i] = createBrickPool(octree.brickPoolBricks, GL_RGBA32F, labels[i]);
+    v.directionalBricks = brickPoolLayout(octree.nodeCount, "nodes", 6);
+    v.directional = createBrickPool(v.directionalBricks * glm::ivec3(1, 1, 6), GL_RGBA32F,
+                                    "radiance pool (+x -x +y -y +z -z)");
     gl::checkErrors("allocating the radiance volume");
+}
+
+void bindDirectionalTexture(gl::ComputeCall& call, const RadianceVolume& v) {
+    call.texture(gl::TEXTURE_DIRECTIONAL_RADIANCE, v.directional.id()).uniform("uDirectionalBricks", v.directionalBricks);
+}
+
+void bindDirectionalImage(gl::ComputeCall& call, const RadianceVolume& v, GLenum access) {
+    call.image(gl::IMAGE_DIRECTIONAL_RADIANCE, v.directional.id(), access, GL_RGBA32F, true)
+        .uniform("uDirectionalBricks", v.directionalBricks);
 }
 
 std::size_t RadianceVolume::bytes(const Octree& octree) const {
     return std::size_t(octree.cellCount()) * (4 * kAccumulatorWords + 16 + 16) + std::size_t(octree.totalCount) * 8 +
-           std::size_t(octree.nodeCount) * 8 + 6 * brickPoolBytes(octree.brickPoolBricks, 16);
+           std::size_t(octree.nodeCount) * 8 + brickPoolBytes(directionalBricks * glm::ivec3(1, 1, 6), 16);
 }
 
 RadianceStatistics readRadianceStatistics(const Octree& octree, const RadianceVolume& v) {

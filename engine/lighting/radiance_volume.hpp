@@ -3,9 +3,9 @@
 // radiance of the surface inside it and the direction its reflected part leaves in, then filtered
 // into bricks seen along each of six directions (brick_layout.hpp, "Slabs"). Rebuilt when lights
 // change, only through the nodes beside light.
-#include <array>
 #include <vector>
 
+#include "gl/compute.hpp"
 #include "gl/objects.hpp"
 #include "gl/shader_interface.hpp"
 #include "voxel/octree.hpp"
@@ -32,10 +32,15 @@ struct RadianceVolume {
     gl::Buffer indirectArgs;  // dispatch arguments, 3 uints per slot
 
     // What each brick sample's slab sends towards a cone travelling along +x, −x, +y, −y, +z, −z
-    // (brick_layout.hpp, "Slabs"), premultiplied by the slab's density: (L·τ, τ), RGBA32F, brick =
-    // node. Not half floats: radiance follows the lights over 12 decades (1e-6 .. 1e6 W/sr) and half
-    // floats would flush dim light to 0 and turn bright light into Inf (and the image into NaN).
-    std::array<gl::Texture, 6> directional;
+    // (brick_layout.hpp, "Slabs"), premultiplied by the slab's density: (L·τ, τ), RGBA32F. Not half
+    // floats: radiance follows the lights over 12 decades (1e-6 .. 1e6 W/sr) and half floats would
+    // flush dim light to 0 and turn bright light into Inf (and the image into NaN).
+    // One texture for the six directions, each a pool of one brick per node laid out as
+    // `directionalBricks`, stacked along z in that order (shaders/directional_pool.glsl). One texture
+    // rather than six because a cone picks the direction at run time, and a sampler array indexed
+    // at run time costs llvmpipe about twice the lookup.
+    gl::Texture directional;
+    glm::ivec3 directionalBricks{1};
 
     double wattsPerUnit = 0.0;  // fixed point of the photon sums (fluxWattsPerUnit, inject.hpp)
 
@@ -44,6 +49,11 @@ struct RadianceVolume {
 
 // Allocates everything for `octree` (once per octree build).
 void allocateRadianceVolume(const Octree& octree, RadianceVolume& volume);
+
+// The directional pool bound to `call` with its layout uniform: as a sampler for the cones and
+// views, or as an image for the passes that write it.
+void bindDirectionalTexture(gl::ComputeCall& call, const RadianceVolume& volume);
+void bindDirectionalImage(gl::ComputeCall& call, const RadianceVolume& volume, GLenum access);
 
 // Per-level numbers read back for the timing report (touched / all nodes).
 struct RadianceStatistics {

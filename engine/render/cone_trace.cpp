@@ -65,7 +65,7 @@ void setConeMarchUniforms(gl::ComputeCall& call, const Octree& octree, const Rad
     const GLuint p = call.program();
     octree.bind(p);
     setBrickPoolUniforms(p, octree);
-    for (int i = 0; i < 6; ++i) call.texture(gl::TEXTURE_DIRECTIONAL_RADIANCE + i, radiance.directional[i].id());
+    bindDirectionalTexture(call, radiance);
     glProgramUniform3fv(p, glGetUniformLocation(p, "uConeDirection"), GLsizei(cones.size()), &directions[0].x);
     glProgramUniform1fv(p, glGetUniformLocation(p, "uConeTanHalfAngle"), GLsizei(cones.size()), tangents.data());
     glProgramUniform1fv(p, glGetUniformLocation(p, "uConeWeight"), GLsizei(cones.size()), weights.data());

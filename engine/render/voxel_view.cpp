@@ -45,7 +45,7 @@ void VoxelView::render(const Octree& octree, const RadianceVolume* radiance, con
         .image(gl::IMAGE_VOXEL_VIEW, image_.id(), GL_WRITE_ONLY, GL_RGBA32F);
     if (radiance) {
         call.storage(gl::SSBO_CELL_RADIANCE, radiance->cellRadiance);
-        for (int i = 0; i < 6; ++i) call.texture(gl::TEXTURE_DIRECTIONAL_RADIANCE + i, radiance->directional[i].id());
+        bindDirectionalTexture(call, *radiance);
     }
     call.dispatchImage(width_, height_, GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
 }

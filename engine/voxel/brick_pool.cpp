@@ -23,16 +23,18 @@ PartialBricks createPartialBricks(const Octree& octree, int level) {
     return partial;
 }
 
-glm::ivec3 brickPoolLayout(std::uint32_t bricks, const char* what) {
+glm::ivec3 brickPoolLayout(std::uint32_t bricks, const char* what, int depthShare) {
     GLint max3D = 0;
     glGetIntegerv(GL_MAX_3D_TEXTURE_SIZE, &max3D);
     const int maxBricksPerAxis = max3D / 3;
+    const int maxDepth = std::max(maxBricksPerAxis / depthShare, 1);
     bricks = std::max<std::uint32_t>(bricks, 1);
-    const int side = std::min(maxBricksPerAxis, int(std::ceil(std::cbrt(double(bricks)))));
-    const int z = int((bricks + std::uint64_t(side) * side - 1) / (std::uint64_t(side) * side));
-    if (z > maxBricksPerAxis)
+    auto depthFor = [&](std::uint64_t side) { return std::uint64_t((bricks + side * side - 1) / (side * side)); };
+    std::uint64_t side = std::min(maxBricksPerAxis, int(std::ceil(std::cbrt(double(bricks)))));
+    while (depthFor(side) > std::uint64_t(maxDepth) && side < std::uint64_t(maxBricksPerAxis)) ++side;
+    if (depthFor(side) > std::uint64_t(maxDepth))
         fail("the octree has ", bricks, " ", what, ", more bricks than a ", max3D, "³ texture holds; lower --voxel-levels");
-    return {side, side, z};
+    return {int(side), int(side), int(depthFor(side))};
 }
 
 gl::Texture createBrickPool(glm::ivec3 bricksPerAxis, GLenum format, const char* label) {

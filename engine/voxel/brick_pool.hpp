@@ -17,8 +17,9 @@ struct PartialBricks {
 PartialBricks createPartialBricks(const Octree& octree, int level);
 
 // Bricks per axis of a pool holding `bricks` bricks: x and y as square as possible, z as needed,
-// within GL_MAX_3D_TEXTURE_SIZE (fails naming `what` when they do not fit).
-glm::ivec3 brickPoolLayout(std::uint32_t bricks, const char* what);
+// within GL_MAX_3D_TEXTURE_SIZE (fails naming `what` when they do not fit). With depthShare n, z
+// stays within 1/n of the limit, for a texture that stacks n such layouts along z.
+glm::ivec3 brickPoolLayout(std::uint32_t bricks, const char* what, int depthShare = 1);
 // A pool of that many bricks per axis (3 texels each), linear filtering, clamped at its edges.
 gl::Texture createBrickPool(glm::ivec3 bricksPerAxis, GLenum format, const char* label);
 std::size_t brickPoolBytes(glm::ivec3 bricksPerAxis, std::size_t bytesPerTexel);
