@@ -8,16 +8,27 @@ uniform int uHasTexture;
 uniform int uMaterialIndex; // into the materials buffer (GpuScene)
 uniform int uVertexColors;  // 0: every vertex of the draw is white; the interpolated colour is
                             // then not used (interpolating 1 is not always exactly 1)
-uniform float uTextureLodBias;  // ≤ 0: sharper texture lookups for the later of several pixel samples
+uniform float uTextureLodBias;  // < 0 for the later of several pixel samples (render/pixel_samples.hpp)
 
 vec3 materialVertexColor(vec3 interpolated) { return uVertexColors != 0 ? interpolated : vec3(1.0); }
+
+// The mip-level bias of a lookup at `uv`. The later of several pixel samples filter isotropically,
+// and an isotropic filter takes its level from the footprint's longer axis: on a floor seen at a
+// grazing angle that blurs across the view what the jitter is meant to integrate. Their bias
+// (uTextureLodBias) is therefore measured from the shorter axis.
+float textureLodBias(vec2 uv) {
+    if (uTextureLodBias >= 0.0) return 0.0;
+    vec2 size = vec2(textureSize(uBaseColorTexture, 0));
+    float alongX = length(dFdx(uv) * size), alongY = length(dFdy(uv) * size);
+    return uTextureLodBias + log2(max(min(alongX, alongY), 1e-6) / max(max(alongX, alongY), 1e-6));
+}
 
 // Linear albedo and alpha at `uv` (the texture's coordinates, material_vertex.glsl) for a
 // surface of vertex colour `vertexColor` (glTF: it multiplies the base colour); discards texels
 // that an alpha mask cuts away.
 vec4 materialBaseColor(vec2 uv, vec3 vertexColor) {
     vec4 color = uBaseColor * vec4(materialVertexColor(vertexColor), 1.0);
-    if (uHasTexture != 0) color *= texture(uBaseColorTexture, uv, uTextureLodBias);  // sRGB: already linear
+    if (uHasTexture != 0) color *= texture(uBaseColorTexture, uv, textureLodBias(uv));  // sRGB: already linear
     if (uAlphaCutoff >= 0.0 && color.a < uAlphaCutoff) discard;
     return color;
 }

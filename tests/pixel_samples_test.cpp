@@ -2,9 +2,12 @@
 // pixel, and that averaging them brings the engine's direct light to the reference's, which
 // integrates over the pixel's area.
 #include <cmath>
+#include <fstream>
+#include <iterator>
 #include <set>
 
 #include "core/image.hpp"
+#include "gltf_quad.hpp"
 #include "metrics/image_metrics.hpp"
 #include "render/pixel_samples.hpp"
 #include "test_util.hpp"
@@ -17,6 +20,22 @@ double mean(const ImageF& image) {
     double sum = 0.0;
     for (std::size_t i = 0; i < image.rgba.size(); i += 4) sum += image.rgba[i] + image.rgba[i + 1] + image.rgba[i + 2];
     return sum / (3.0 * double(image.width) * image.height);
+}
+
+// A 32×32 texture of white tiles with dark joints one texel wide every 8 texels, as PNG bytes.
+std::string tilesPng(const std::filesystem::path& dir) {
+    Image8 image(32, 32);
+    for (int y = 0; y < 32; ++y)
+        for (int x = 0; x < 32; ++x) {
+            const std::uint8_t v = x % 8 == 0 || y % 8 == 0 ? 0 : 255;
+            std::uint8_t* t = image.at(x, y);
+            t[0] = t[1] = t[2] = v;
+            t[3] = 255;
+        }
+    const auto file = dir / "tiles.png";
+    writePng(file, image);
+    std::ifstream in(file, std::ios::binary);
+    return std::string(std::istreambuf_iterator<char>(in), {});
 }
 
 }  // namespace
@@ -72,4 +91,41 @@ TEST(PixelSamples, SixteenSamplesBringTheDirectLightToTheReferences) {
     EXPECT_LT(error[1], 0.4 * error[0]);
     EXPECT_LT(error[1], 0.008);
     EXPECT_NEAR(ratio[1], 1.0, 0.01);
+}
+
+TEST(PixelSamples, SixteenSamplesOfAGrazingTiledFloorConvergeToItsArea) {
+    // The tiled quad seen at a grazing angle, its texture repeated 8 times: far away its joints are
+    // much thinner than a pixel across the view and the texture is squeezed along it. The
+    // reference integrates every pixel's area with level-0 lookups; under the quad's sun
+    // (tests/gltf_quad.hpp) its direct radiance is the albedo. Jittered samples whose lookups are
+    // still filtered over the whole pixel (mipmapped at the pixel's footprint, or anisotropic)
+    // converge to a texture blurred by that filter instead.
+    const auto dir = test::testDir();
+    test::GltfQuad quad;
+    quad.uv0 = {{0, 8}, {8, 8}, {8, 0}, {0, 0}};
+    quad.png = tilesPng(dir);
+    quad.material = {{"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 0}}}}}, {"doubleSided", true}};
+    const auto model = test::writeGltfQuad(dir, "tiles", quad);
+    const std::string view = "--scene " + model.string() +
+                             " --eye 0.1,-1.35,0.22 --target 0,0.6,0 --up 0,0,1 --fov 50 --width 80 --height 60"
+                             " --sun-dir 0,0,-1 --sun-irradiance 3.14159265";
+    const auto reference = dir / "reference.pfm";
+    const test::CommandResult ref =
+        test::runVct("reference -q " + view + " --bounces 0 --spp 1024 -o " + reference.string());
+    ASSERT_EQ(ref.exitCode, 0) << ref.output;
+    const ImageF truth = readHdrImage(reference);
+    double error[2] = {0, 0};
+    const int samples[2] = {1, 16};
+    for (int i = 0; i < 2; ++i) {
+        const auto out = dir / ("albedo" + std::to_string(samples[i]));
+        const test::CommandResult r = test::runVct("render -q " + view + " --voxel-levels 5 --gi off --aov albedo --samples " +
+                                                   std::to_string(samples[i]) + " --out " + out.string() +
+                                                   ".png --hdr-out " + out.string() + ".pfm");
+        ASSERT_EQ(r.exitCode, 0) << r.output;
+        error[i] = metrics::rmse(readHdrImage(out.string() + ".pfm"), truth);
+    }
+    std::printf("[ samples  ] grazing tiled floor, albedo against the reference: RMSE %.4f with 1 sample, %.4f with 16\n",
+                error[0], error[1]);
+    EXPECT_LT(error[1], 0.6 * error[0]);
+    EXPECT_LT(error[1], 0.03);
 }

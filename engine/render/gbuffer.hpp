@@ -3,6 +3,7 @@
 // position and emissive targets that the lighting passes read per pixel.
 #include "gl/objects.hpp"
 #include "render/gpu_scene.hpp"
+#include "render/pixel_samples.hpp"
 #include "render/view.hpp"
 
 namespace vct {
@@ -10,8 +11,8 @@ namespace vct {
 class GBuffer {
 public:
     GBuffer(int width, int height);
-    // `textureLodBias` ≤ 0 (render/pixel_samples.hpp) sharpens the texture lookups of later samples.
-    void render(const GpuScene& scene, const ViewTransform& camera, float textureLodBias = 0.0f);
+    // `filtering` (render/pixel_samples.hpp) sharpens the texture lookups of later pixel samples.
+    void render(const GpuScene& scene, const ViewTransform& camera, TextureFiltering filtering = {});
 
     GLuint albedo() const { return albedo_.id(); }      // RGBA16F linear albedo
     GLuint normal() const { return normal_.id(); }      // RGBA16F unit normal facing the camera

@@ -125,23 +125,25 @@ void GpuScene::setMaterial(std::size_t index, const Material& material) {
     m.texture = material.baseColorTexture;
     m.texCoordSet = material.baseColorMapping.texCoord;
     m.uvTransform = material.baseColorMapping.transform;
-    m.sampler = samplerFor(material.baseColorMapping.wrapS, material.baseColorMapping.wrapT);
+    m.sampler = samplerFor(material.baseColorMapping.wrapS, material.baseColorMapping.wrapT, Filtering::Anisotropic);
+    m.isotropicSampler = samplerFor(material.baseColorMapping.wrapS, material.baseColorMapping.wrapT, Filtering::Isotropic);
     const glm::vec4 values[2] = {glm::vec4(material.baseColor, material.baseAlpha), glm::vec4(material.emissive, 0.0f)};
     glNamedBufferSubData(materialBuffer_.id(), GLintptr(index * sizeof values), sizeof values, values);
 }
 
-GLuint GpuScene::samplerFor(TextureWrap wrapS, TextureWrap wrapT) {
-    // Plain repeat is what the textures themselves are set to: no sampler object, so scenes
-    // without wrap modes are sampled exactly as before.
-    if (wrapS == TextureWrap::Repeat && wrapT == TextureWrap::Repeat) return 0;
-    gl::Sampler& sampler = samplers_[3 * int(wrapS) + int(wrapT)];
+GLuint GpuScene::samplerFor(TextureWrap wrapS, TextureWrap wrapT, Filtering filtering) {
+    // Anisotropic plain repeat is what the textures themselves are set to: no sampler object, so
+    // scenes without wrap modes are sampled exactly as before.
+    const bool anisotropic = filtering == Filtering::Anisotropic;
+    if (anisotropic && wrapS == TextureWrap::Repeat && wrapT == TextureWrap::Repeat) return 0;
+    gl::Sampler& sampler = samplers_[anisotropic ? 0 : 1][3 * int(wrapS) + int(wrapT)];
     if (sampler.id() == 0) {
         sampler = gl::createSampler();
         glSamplerParameteri(sampler.id(), GL_TEXTURE_MIN_FILTER, kMinFilter);
         glSamplerParameteri(sampler.id(), GL_TEXTURE_MAG_FILTER, kMagFilter);
         glSamplerParameteri(sampler.id(), GL_TEXTURE_WRAP_S, glWrap(wrapS));
         glSamplerParameteri(sampler.id(), GL_TEXTURE_WRAP_T, glWrap(wrapT));
-        if (anisotropy_ > 1.0f) glSamplerParameterf(sampler.id(), GL_TEXTURE_MAX_ANISOTROPY, anisotropy_);
+        if (anisotropic && anisotropy_ > 1.0f) glSamplerParameterf(sampler.id(), GL_TEXTURE_MAX_ANISOTROPY, anisotropy_);
     }
     return sampler.id();
 }
@@ -154,7 +156,7 @@ float GpuScene::maxEmission() const {
     return m;
 }
 
-void GpuScene::draw(GLuint program, Materials which) const {
+void GpuScene::draw(GLuint program, Materials which, Filtering filtering) const {
     glBindVertexArray(vertexArray_.id());
     for (std::size_t r = 0; r < ranges_.size(); ++r) {
         const DrawRange& range = ranges_[r];
@@ -170,7 +172,7 @@ void GpuScene::draw(GLuint program, Materials which) const {
         gl::setUniform(program, "uTexCoordSet", m.texCoordSet);
         gl::setUniform(program, "uUvTransform", m.uvTransform);
         glBindTextureUnit(gl::TEXTURE_BASE_COLOR, m.texture >= 0 ? textures_[std::size_t(m.texture)].id() : 0);
-        glBindSampler(gl::TEXTURE_BASE_COLOR, m.sampler);
+        glBindSampler(gl::TEXTURE_BASE_COLOR, filtering == Filtering::Anisotropic ? m.sampler : m.isotropicSampler);
         glDrawElements(GL_TRIANGLES, GLsizei(range.indexCount), GL_UNSIGNED_INT,
                        reinterpret_cast<const void*>(std::uintptr_t(range.firstIndex) * sizeof(std::uint32_t)));
     }

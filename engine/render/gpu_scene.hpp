@@ -25,9 +25,13 @@ public:
     // rasterizers run much faster than a fragment shader that may discard).
     enum class Materials { All, Opaque, Masked };
 
+    // How the base-colour textures are filtered: mipmapped and anisotropic (the textures' own
+    // settings), or mipmapped only (render/pixel_samples.hpp says when).
+    enum class Filtering { Anisotropic, Isotropic };
+
     // Draws the triangles of `which` materials with `program` bound; sets its material uniforms
     // (shaders/material.glsl) and binds the base-colour texture at gl::TEXTURE_BASE_COLOR.
-    void draw(GLuint program, Materials which = Materials::All) const;
+    void draw(GLuint program, Materials which = Materials::All, Filtering filtering = Filtering::Anisotropic) const;
 
     std::size_t bytes() const { return bytes_; }
 
@@ -44,20 +48,21 @@ private:
         glm::vec3 emissive{0.0f};
         float alphaCutoff = -1.0f;  // negative: opaque
         int texture = -1;           // index into textures_, −1 none
-        // The base-colour texture's TextureMapping: UV set, transform, and the sampler object of
-        // its wrap modes (0: the texture's own settings, repeat).
+        // The base-colour texture's TextureMapping: UV set, transform, and the sampler objects of
+        // its wrap modes (anisotropic: 0 for the texture's own settings, repeat; and isotropic).
         int texCoordSet = 0;
         glm::mat3 uvTransform{1.0f};
         GLuint sampler = 0;
+        GLuint isotropicSampler = 0;
     };
-    // The sampler object of a wrap pair, made on first use; 0 for repeat/repeat.
-    GLuint samplerFor(TextureWrap wrapS, TextureWrap wrapT);
+    // The sampler object of a wrap pair, made on first use; 0 for an anisotropic repeat/repeat.
+    GLuint samplerFor(TextureWrap wrapS, TextureWrap wrapT, Filtering filtering);
 
     gl::VertexArray vertexArray_;
     gl::Buffer vertices_;
     gl::Buffer indices_;
     std::vector<gl::Texture> textures_;
-    gl::Sampler samplers_[9];  // by 3·wrapS + wrapT, made on first use (none for repeat/repeat)
+    gl::Sampler samplers_[2][9];  // by filtering, 3·wrapS + wrapT, made on first use (none for anisotropic repeat/repeat)
     float anisotropy_ = 1.0f;
     std::vector<GpuMaterial> materials_;
     gl::Buffer materialBuffer_;
