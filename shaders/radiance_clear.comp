@@ -1,13 +1,18 @@
 #version 450
 layout(local_size_x = 64) in;
-// radiance_leaves, first step: every brick sample of the six radiance pools starts as no light over the
-// geometry's density along its direction, (0, 0, 0, τ±a) (brick_layout.hpp, "Slabs"), so that a
-// cone reads one pool per direction and finds the opacity of unlit geometry there too. The
-// nodes beside light are written again by radiance_leaves and radiance_mip.
+// radiance_leaves, first step: brick samples start as no light over the geometry's density along
+// their direction, (0, 0, 0, τ±a) (brick_layout.hpp, "Slabs"), so that a cone reads one pool per
+// direction and finds the opacity of unlit geometry there too. The nodes beside light are written
+// again by radiance_leaves and radiance_mip. Every node's bricks once (after the volume is
+// allocated or the geometry's bricks change); after that, with CLEAR_BORDER, only those of the
+// previous filtering's border nodes (still flagged): the only ones that can hold light.
 #include "voxel_common.glsl"
 #include "octree.glsl"
 #include "bricks_common.glsl"
 #include "directional_pool.glsl"
+#if defined(CLEAR_BORDER)
+#include "radiance_common.glsl"
+#endif
 
 layout(binding = TEXTURE_OPACITY_PLUS) uniform sampler3D uOpacityPlus;
 layout(binding = TEXTURE_OPACITY_MINUS) uniform sampler3D uOpacityMinus;
@@ -18,6 +23,9 @@ uniform uint uNodeCount;
 void main() {
     uint node = linearInvocation();
     if (node >= uNodeCount) return;
+#if defined(CLEAR_BORDER)
+    if (borderFlag[node] == 0u) return;
+#endif
     ivec3 origin = brickOrigin(node);
     for (int s = 0; s < 27; ++s) {
         ivec3 local = ivec3(s % 3, (s / 3) % 3, s / 9);

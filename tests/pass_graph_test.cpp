@@ -349,3 +349,35 @@ TEST_F(PassGraphTest, BenchmarkSequenceKeepsGi) {
     double sa = 0, sb = 0; for (std::size_t i = 0; i < a.rgba.size(); ++i) { sa += a.rgba[i]; sb += b.rgba[i]; }
     EXPECT_GT(sa, 0.0); EXPECT_NEAR(sa, sb, 1e-6 * sb) << sa << " vs " << sb;
 }
+
+// A new filtering clears only the bricks the last one lit (RadianceFilter::leaves): a narrow spot
+// moved from the left wall to the right one must leave nothing of its old light behind, in the
+// cones' image and in the octree's radiance view.
+TEST_F(PassGraphTest, ASpotMovedAwayLeavesNoLightWhereItWas) {
+    const Camera camera = scene_.cameras[0];
+    Light spot = scene_.lights[0];
+    spot.type = LightType::Spot;
+    spot.position = {0.0, 1.8, 0.0};
+    spot.innerAngleDeg = 10.0;
+    spot.outerAngleDeg = 15.0;
+    auto aimedAt = [&](double x) {
+        Light l = spot;
+        l.direction = glm::normalize(glm::dvec3(x, -0.6, -0.3));
+        return std::vector<Light>{l};
+    };
+    for (ViewMode view : {ViewMode::Lit, ViewMode::Radiance}) {
+        RenderSettings s = smallSettings();
+        s.view = view;
+        Renderer incremental(scene_, s);
+        incremental.setLights(aimedAt(-1.0));
+        incremental.renderFrame(camera);
+        incremental.setLights(aimedAt(1.0));
+        incremental.renderFrame(camera);
+        EXPECT_EQ(ran(incremental).count(Pass::SvoBuild), 0u);
+        Scene moved = scene_;
+        moved.lights = aimedAt(1.0);
+        Renderer fresh(moved, s);
+        fresh.renderFrame(camera);
+        EXPECT_TRUE(incremental.readHdr().rgba == fresh.readHdr().rgba) << "view " << int(view);
+    }
+}

@@ -16,20 +16,27 @@ gl::ComputeCall over(const gl::Program& program, const Octree& octree, const Rad
 
 RadianceFilter::RadianceFilter()
     : clear_(gl::buildProgram({{GL_COMPUTE_SHADER, "radiance_clear.comp"}})),
+      clearBorder_(gl::buildProgram({{GL_COMPUTE_SHADER, "radiance_clear.comp"}}, {"CLEAR_BORDER 1"})),
       touchParents_(gl::buildProgram({{GL_COMPUTE_SHADER, "touch_parents.comp"}})),
       touchBorder_(gl::buildProgram({{GL_COMPUTE_SHADER, "touch_border.comp"}})),
       leaves_(gl::buildProgram({{GL_COMPUTE_SHADER, "radiance_leaves.comp"}})),
       mip_(gl::buildProgram({{GL_COMPUTE_SHADER, "radiance_mip.comp"}})) {}
 
 void RadianceFilter::leaves(const Octree& octree, RadianceVolume& volume) {
-    // Bricks outside the border lists are not written again: they must read as no light.
-    gl::ComputeCall clear(clear_);
-    setBrickPoolUniforms(clear.program(), octree);
+    // Bricks outside the border lists are not written again: they must read as no light. Only the
+    // last filtering's border nodes can hold light; every node, the first time.
+    gl::ComputeCall clear = over(volume.darkOutsideBorder ? clearBorder_ : clear_, octree, volume, 0);
     clear.uniform("uNodeCount", octree.nodeCount)
         .texture(gl::TEXTURE_OPACITY_PLUS, octree.brickOpacityPlus.id())
         .texture(gl::TEXTURE_OPACITY_MINUS, octree.brickOpacityMinus.id());
     bindDirectionalImage(clear, volume, GL_WRITE_ONLY);
     clear.dispatch1D(octree.nodeCount, 64, kBarrier);
+    const std::uint32_t zero = 0;
+    glClearNamedBufferData(volume.borderFlag.id(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
+    glClearNamedBufferSubData(volume.listCounts.id(), GL_R32UI, 4 * kBorderCountSlot,
+                              4 * (gl::MISSED_COUNT_SLOT - gl::BORDER_COUNT_SLOT), GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
+    volume.darkOutsideBorder = true;
 
     for (int level = octree.levels - 1; level >= 0; --level)
         listDispatch_.dispatch(over(touchParents_, octree, volume, level), volume,

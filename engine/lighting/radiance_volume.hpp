@@ -41,6 +41,10 @@ struct RadianceVolume {
     // at run time costs llvmpipe about twice the lookup.
     gl::Texture directional;
     glm::ivec3 directionalBricks{1};
+    // Whether every node outside the border lists holds no light over the current geometry's
+    // density (shaders/radiance_clear.comp): then a new filtering only has to clear the bricks of
+    // the last one's border nodes. False after allocation and whenever the geometry bricks change.
+    bool darkOutsideBorder = false;
 
     double wattsPerUnit = 0.0;  // fixed point of the photon sums (fluxWattsPerUnit, inject.hpp)
 

@@ -193,7 +193,10 @@ const PassTable kFramePasses = {{
     {Pass::BricksMip, "bricks_mip", Stage::Octree,
      {}, {R::LeafBricks}, {R::GeometryBricks}, unlessOctree,
      "bricks_mip.comp, bricks_opacity.comp, bricks_complete.comp",
-     [](FrameResources& f, const FrameView&) { f.svo->bricksMip(); }},
+     [](FrameResources& f, const FrameView&) {
+         f.svo->bricksMip();
+         if (f.radiance) f.radiance->darkOutsideBorder = false;  // unlit bricks hold the old density
+     }},
     {Pass::LightView, "light_view", Stage::Light,
      {I::Geometry, I::Materials, I::Lights, I::ShadowSettings}, {}, {R::LightViewMaps}, unlessLightViews,
      "scene.vert, light_view.frag, shadow_depth.frag",
