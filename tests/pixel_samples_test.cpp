@@ -22,6 +22,25 @@ double mean(const ImageF& image) {
     return sum / (3.0 * double(image.width) * image.height);
 }
 
+// The path tracer's direct light of `view` (vct options), `spp` samples per pixel, written in `dir`.
+ImageF referenceDirect(const std::filesystem::path& dir, const std::string& view, int spp) {
+    const auto file = dir / "reference.pfm";
+    const test::CommandResult r =
+        test::runVct("reference -q " + view + " --bounces 0 --spp " + std::to_string(spp) + " -o " + file.string());
+    EXPECT_EQ(r.exitCode, 0) << r.output;
+    return r.exitCode == 0 ? readHdrImage(file) : ImageF();
+}
+
+// The engine's `aov` of `view` averaged over `samples` pixel samples, written in `dir`.
+ImageF renderSamples(const std::filesystem::path& dir, const std::string& view, const std::string& aov, int samples) {
+    const auto out = dir / (aov + std::to_string(samples));
+    const test::CommandResult r = test::runVct("render -q " + view + " --aov " + aov + " --samples " +
+                                               std::to_string(samples) + " --out " + out.string() + ".png --hdr-out " +
+                                               out.string() + ".pfm");
+    EXPECT_EQ(r.exitCode, 0) << r.output;
+    return r.exitCode == 0 ? readHdrImage(out.string() + ".pfm") : ImageF();
+}
+
 // A 32×32 texture of white tiles with dark joints one texel wide every 8 texels, as PNG bytes.
 std::string tilesPng(const std::filesystem::path& dir) {
     Image8 image(32, 32);
@@ -70,18 +89,13 @@ TEST(PixelSamples, SixteenSamplesBringTheDirectLightToTheReferences) {
     // misses that on every edge and shadow boundary, 16 jittered samples average it.
     const auto dir = test::testDir();
     const std::string view = "--scene cornell --width 96 --height 72";
-    const auto reference = dir / "reference.pfm";
-    ASSERT_EQ(test::runVct("reference -q " + view + " --bounces 0 --spp 256 -o " + reference.string()).exitCode, 0);
-    const ImageF truth = readHdrImage(reference);
+    const ImageF truth = referenceDirect(dir, view, 256);
+    ASSERT_FALSE(truth.rgba.empty());
     double error[2] = {0, 0}, ratio[2] = {0, 0};
     const int samples[2] = {1, 16};
     for (int i = 0; i < 2; ++i) {
-        const auto out = dir / ("direct" + std::to_string(samples[i]));
-        const test::CommandResult r = test::runVct("render -q " + view + " --aov direct --samples " +
-                                                   std::to_string(samples[i]) + " --out " + out.string() +
-                                                   ".png --hdr-out " + out.string() + ".pfm");
-        ASSERT_EQ(r.exitCode, 0) << r.output;
-        const ImageF direct = readHdrImage(out.string() + ".pfm");
+        const ImageF direct = renderSamples(dir, view, "direct", samples[i]);
+        ASSERT_FALSE(direct.rgba.empty());
         error[i] = metrics::rmse(direct, truth);
         ratio[i] = mean(direct) / mean(truth);
     }
@@ -109,20 +123,14 @@ TEST(PixelSamples, SixteenSamplesOfAGrazingTiledFloorConvergeToItsArea) {
     const std::string view = "--scene " + model.string() +
                              " --eye 0.1,-1.35,0.22 --target 0,0.6,0 --up 0,0,1 --fov 50 --width 80 --height 60"
                              " --sun-dir 0,0,-1 --sun-irradiance 3.14159265";
-    const auto reference = dir / "reference.pfm";
-    const test::CommandResult ref =
-        test::runVct("reference -q " + view + " --bounces 0 --spp 1024 -o " + reference.string());
-    ASSERT_EQ(ref.exitCode, 0) << ref.output;
-    const ImageF truth = readHdrImage(reference);
+    const ImageF truth = referenceDirect(dir, view, 1024);
+    ASSERT_FALSE(truth.rgba.empty());
     double error[2] = {0, 0};
     const int samples[2] = {1, 16};
     for (int i = 0; i < 2; ++i) {
-        const auto out = dir / ("albedo" + std::to_string(samples[i]));
-        const test::CommandResult r = test::runVct("render -q " + view + " --voxel-levels 5 --gi off --aov albedo --samples " +
-                                                   std::to_string(samples[i]) + " --out " + out.string() +
-                                                   ".png --hdr-out " + out.string() + ".pfm");
-        ASSERT_EQ(r.exitCode, 0) << r.output;
-        error[i] = metrics::rmse(readHdrImage(out.string() + ".pfm"), truth);
+        const ImageF albedo = renderSamples(dir, view + " --voxel-levels 5 --gi off", "albedo", samples[i]);
+        ASSERT_FALSE(albedo.rgba.empty());
+        error[i] = metrics::rmse(albedo, truth);
     }
     std::printf("[ samples  ] grazing tiled floor, albedo against the reference: RMSE %.4f with 1 sample, %.4f with 16\n",
                 error[0], error[1]);
