@@ -24,8 +24,7 @@ void BounceGather::run(const Octree& octree, RadianceVolume& volume, RadianceFil
     glCopyNamedBufferSubData(volume.cellDirection.id(), base_.id(), 0, GLintptr(half), GLsizeiptr(half));
     constexpr GLbitfield kBarrier = GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT;
     for (int bounce = 2; bounce <= bounces; ++bounce) {
-        const std::uint32_t zero = 0;
-        glNamedBufferSubData(volume.listCounts.id(), GLintptr(4 * gl::BOUNCE_LIST_COUNT_SLOT), 4, &zero);
+        clearListCounts(volume, gl::BOUNCE_LIST_COUNT_SLOT, gl::BOUNCE_LIST_COUNT_SLOT + 1);
         // First children (one per leaf node), then their siblings (one per cell), which read what
         // the first children gathered or list themselves, then the listed cells.
         auto prepare = [&](const gl::Program& program) {

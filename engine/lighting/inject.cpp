@@ -29,10 +29,8 @@ void PhotonInjection::run(const Octree& octree, RadianceVolume& volume, const Sc
         glClearNamedBufferData(b->id(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
     // The border lists stay: the radiance filter first clears the bricks of the nodes on them, the
     // only ones the last filtering lit (RadianceFilter::leaves), then rebuilds them.
-    glClearNamedBufferSubData(volume.listCounts.id(), GL_R32UI, 0, 4 * gl::BORDER_COUNT_SLOT, GL_RED_INTEGER,
-                              GL_UNSIGNED_INT, &zero);
-    glClearNamedBufferSubData(volume.listCounts.id(), GL_R32UI, 4 * gl::MISSED_COUNT_SLOT,
-                              4 * (gl::LIST_COUNT_SLOTS - gl::MISSED_COUNT_SLOT), GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
+    clearListCounts(volume, 0, gl::BORDER_COUNT_SLOT);
+    clearListCounts(volume, gl::MISSED_COUNT_SLOT, gl::LIST_COUNT_SLOTS);
     for (const gl::Buffer* b : {&volume.cellRadiance, &volume.cellDirection})
         glClearNamedBufferData(b->id(), GL_RGBA32F, GL_RGBA, GL_FLOAT, zeros);
     glMemoryBarrier(GL_ALL_BARRIER_BITS);

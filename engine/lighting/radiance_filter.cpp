@@ -24,8 +24,11 @@ RadianceFilter::RadianceFilter()
 
 void RadianceFilter::leaves(const Octree& octree, RadianceVolume& volume) {
     // Bricks outside the border lists are not written again: they must read as no light. Only the
-    // last filtering's border nodes can hold light; every node, the first time.
-    gl::ComputeCall clear = over(volume.darkOutsideBorder ? clearBorder_ : clear_, octree, volume, 0);
+    // last filtering's border nodes can hold light; every node, the first time over these geometry
+    // bricks (their density is what "no light" holds).
+    const bool onlyBorder =
+        volume.darkOutsideBorderFor != 0 && volume.darkOutsideBorderFor == octree.geometryBricksBuild;
+    gl::ComputeCall clear = over(onlyBorder ? clearBorder_ : clear_, octree, volume, 0);
     clear.uniform("uNodeCount", octree.nodeCount)
         .texture(gl::TEXTURE_OPACITY_PLUS, octree.brickOpacityPlus.id())
         .texture(gl::TEXTURE_OPACITY_MINUS, octree.brickOpacityMinus.id());
@@ -33,10 +36,9 @@ void RadianceFilter::leaves(const Octree& octree, RadianceVolume& volume) {
     clear.dispatch1D(octree.nodeCount, 64, kBarrier);
     const std::uint32_t zero = 0;
     glClearNamedBufferData(volume.borderFlag.id(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
-    glClearNamedBufferSubData(volume.listCounts.id(), GL_R32UI, 4 * kBorderCountSlot,
-                              4 * (gl::MISSED_COUNT_SLOT - gl::BORDER_COUNT_SLOT), GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
+    clearListCounts(volume, gl::BORDER_COUNT_SLOT, gl::MISSED_COUNT_SLOT);
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
-    volume.darkOutsideBorder = true;
+    volume.darkOutsideBorderFor = octree.geometryBricksBuild;
 
     for (int level = octree.levels - 1; level >= 0; --level)
         listDispatch_.dispatch(over(touchParents_, octree, volume, level), volume,

@@ -1,8 +1,8 @@
 #pragma once
 // radiance_leaves and radiance_mip passes: the radiance bricks (brick_layout.hpp), only through the
 // nodes beside light.
-//   leaves: the bricks the last filtering lit (every brick, the first time) as no light over the
-//           geometry's density (shaders/radiance_clear.comp),
+//   leaves: the bricks the last filtering lit (every brick, the first time over new geometry
+//           bricks) as no light over the geometry's density (shaders/radiance_clear.comp),
 //           the touched nodes of every level (parents of touched nodes, up to the root), the
 //           border nodes of every level (the 3³ neighbourhood of touched ones: every node whose
 //           samples can be other than zero), and the leaf bricks of the border leaves from their

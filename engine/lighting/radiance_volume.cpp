@@ -26,6 +26,12 @@ void allocateRadianceVolume(const Octree& octree, RadianceVolume& v) {
     gl::checkErrors("allocating the radiance volume");
 }
 
+void clearListCounts(const RadianceVolume& v, unsigned first, unsigned end) {
+    const std::uint32_t zero = 0;
+    glClearNamedBufferSubData(v.listCounts.id(), GL_R32UI, GLintptr(4 * first), GLsizeiptr(4 * (end - first)),
+                              GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
+}
+
 void bindDirectionalTexture(gl::ComputeCall& call, const RadianceVolume& v) {
     call.texture(gl::TEXTURE_DIRECTIONAL_RADIANCE, v.directional.id()).uniform("uDirectionalBricks", v.directionalBricks);
 }

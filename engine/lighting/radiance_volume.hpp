@@ -41,10 +41,10 @@ struct RadianceVolume {
     // at run time costs llvmpipe about twice the lookup.
     gl::Texture directional;
     glm::ivec3 directionalBricks{1};
-    // Whether every node outside the border lists holds no light over the current geometry's
-    // density (shaders/radiance_clear.comp): then a new filtering only has to clear the bricks of
-    // the last one's border nodes. False after allocation and whenever the geometry bricks change.
-    bool darkOutsideBorder = false;
+    // The geometry bricks (Octree::geometryBricksBuild) over whose density every node outside the
+    // border lists holds no light (shaders/radiance_clear.comp); 0: none yet. While they are the
+    // octree's, a new filtering only has to clear the bricks of the last one's border nodes.
+    std::uint64_t darkOutsideBorderFor = 0;
 
     double wattsPerUnit = 0.0;  // fixed point of the photon sums (fluxWattsPerUnit, inject.hpp)
 
@@ -53,6 +53,9 @@ struct RadianceVolume {
 
 // Allocates everything for `octree` (once per octree build).
 void allocateRadianceVolume(const Octree& octree, RadianceVolume& volume);
+
+// Sets list counts [first, end) (gl::*_SLOT) to zero.
+void clearListCounts(const RadianceVolume& volume, unsigned first, unsigned end);
 
 // The directional pool bound to `call` with its layout uniform: as a sampler for the cones and
 // views, or as an image for the passes that write it.

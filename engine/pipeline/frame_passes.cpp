@@ -193,10 +193,7 @@ const PassTable kFramePasses = {{
     {Pass::BricksMip, "bricks_mip", Stage::Octree,
      {}, {R::LeafBricks}, {R::GeometryBricks}, unlessOctree,
      "bricks_mip.comp, bricks_opacity.comp, bricks_complete.comp",
-     [](FrameResources& f, const FrameView&) {
-         f.svo->bricksMip();
-         if (f.radiance) f.radiance->darkOutsideBorder = false;  // unlit bricks hold the old density
-     }},
+     [](FrameResources& f, const FrameView&) { f.svo->bricksMip(); }},
     {Pass::LightView, "light_view", Stage::Light,
      {I::Geometry, I::Materials, I::Lights, I::ShadowSettings}, {}, {R::LightViewMaps}, unlessLightViews,
      "scene.vert, light_view.frag, shadow_depth.frag",
@@ -226,7 +223,7 @@ const PassTable kFramePasses = {{
      {I::Geometry, I::Materials, I::Camera, I::OutputSize}, {}, {R::GBuffer}, unlessLitView,
      "scene.vert, gbuffer.frag",
      [](FrameResources& f, const FrameView& v) {
-         f.gbuffer->render(*f.gpuScene, v.transform, textureFiltering(v.sample));
+         f.gbuffer->render(*f.gpuScene, v.transform, textureLodBias(v.sample));
      }},
     {Pass::DirectLighting, "direct_lighting", Stage::Camera,
      {I::Lights, I::ShadowSettings}, {R::GBuffer, R::LightViewMaps}, {R::DirectRadiance}, unlessLitView,

@@ -30,7 +30,7 @@ GBuffer::GBuffer(int width, int height)
 
 std::size_t GBuffer::bytes() const { return std::size_t(width_) * height_ * (8 + 8 + 16 + 16 + 4); }
 
-void GBuffer::render(const GpuScene& scene, const ViewTransform& camera, TextureFiltering filtering) {
+void GBuffer::render(const GpuScene& scene, const ViewTransform& camera, float textureLodBias) {
     gl::beginRasterPass({framebuffer_.id(), width_, height_, true});
     const float zero[4] = {0, 0, 0, 0};
     for (int i = 0; i < 4; ++i) glClearNamedFramebufferfv(framebuffer_.id(), GL_COLOR, i, zero);
@@ -38,9 +38,9 @@ void GBuffer::render(const GpuScene& scene, const ViewTransform& camera, Texture
     glUseProgram(program_.id());
     gl::setUniform(program_.id(), "uViewProjection", camera.viewProjection);
     gl::setUniform(program_.id(), "uEye", camera.eye);
-    gl::setUniform(program_.id(), "uTextureLodBias", filtering.lodBias);
+    gl::setUniform(program_.id(), "uTextureLodBias", textureLodBias);
     scene.draw(program_.id(), GpuScene::Materials::All,
-               filtering.anisotropic ? GpuScene::Filtering::Anisotropic : GpuScene::Filtering::Isotropic);
+               textureLodBias < 0.0f ? GpuScene::Filtering::Isotropic : GpuScene::Filtering::Anisotropic);
     gl::endRasterPass();
 }
 

@@ -3,7 +3,6 @@
 // position and emissive targets that the lighting passes read per pixel.
 #include "gl/objects.hpp"
 #include "render/gpu_scene.hpp"
-#include "render/pixel_samples.hpp"
 #include "render/view.hpp"
 
 namespace vct {
@@ -11,8 +10,9 @@ namespace vct {
 class GBuffer {
 public:
     GBuffer(int width, int height);
-    // `filtering` (render/pixel_samples.hpp) sharpens the texture lookups of later pixel samples.
-    void render(const GpuScene& scene, const ViewTransform& camera, TextureFiltering filtering = {});
+    // `textureLodBias` < 0 (render/pixel_samples.hpp): the isotropic, sharper texture lookups of
+    // later pixel samples.
+    void render(const GpuScene& scene, const ViewTransform& camera, float textureLodBias = 0.0f);
 
     GLuint albedo() const { return albedo_.id(); }      // RGBA16F linear albedo
     GLuint normal() const { return normal_.id(); }      // RGBA16F unit normal facing the camera

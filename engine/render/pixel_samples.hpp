@@ -34,17 +34,10 @@ inline glm::dvec2 pixelSampleOffset(int sample) {
 // shorter axis (a mip-level bias of −½·log2(k + 1), down to −3, which keeps the aliasing of
 // single samples bounded; shaders/material.glsl measures it from the shorter axis), isotropic,
 // because an anisotropic filter spreads its probes along the pixel's whole footprint whatever the
-// bias. Measured on llvmpipe, Sponza with 16 samples: a bias alone, with anisotropic filtering,
-// left the floor's texture blurred along the view (direct RMSE 0.0147 on CameraMain, 0.0156 on
-// CameraAlternate; now 0.0121 and 0.0104).
-struct TextureFiltering {
-    float lodBias = 0.0f;  // ≤ 0; < 0: isotropic, the bias relative to the footprint's shorter axis
-    bool anisotropic = true;
-};
-
-inline TextureFiltering textureFiltering(int sample) {
-    if (sample <= 0) return {};
-    return {std::max(-3.0f, -0.5f * std::log2(float(sample + 1))), false};
+// bias (with it, Sponza's floor converged to a texture blurred along the view:
+// docs/benchmark.md). Returns sample k's bias; < 0 tells the G-buffer to look up isotropically.
+inline float textureLodBias(int sample) {
+    return sample <= 0 ? 0.0f : std::max(-3.0f, -0.5f * std::log2(float(sample + 1)));
 }
 
 }  // namespace vct

@@ -35,6 +35,9 @@ struct Octree {
     std::array<std::uint32_t, kMaxOctreeLevels + 1> levelCount{};
     std::uint32_t nodeCount = 0;  // levels 0..L−1 (these have bricks)
     std::uint32_t totalCount = 0;  // including the cells
+    // Which build of the geometry bricks (albedo, opacity) the pools hold: a new number every time
+    // bricks_mip completes them, never repeated by the same builder (radiance_volume.hpp).
+    std::uint64_t geometryBricksBuild = 0;
 
     // Node pool (SoA), totalCount entries each.
     gl::Buffer child, mask, coord, parent;

@@ -22,7 +22,10 @@ void SvoBuilder::neighbours() { neighbours_.run(octree_); }
 
 void SvoBuilder::bricks() { leafAlbedo_ = bricks_.run(octree_); }
 
-void SvoBuilder::bricksMip() { bricksMip_.run(octree_, std::move(leafAlbedo_)); }
+void SvoBuilder::bricksMip() {
+    bricksMip_.run(octree_, std::move(leafAlbedo_));
+    octree_.geometryBricksBuild = ++geometryBricksBuilds_;
+}
 
 VoxelMemoryReport SvoBuilder::memory() const {
     VoxelMemoryReport r;

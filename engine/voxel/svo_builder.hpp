@@ -51,6 +51,7 @@ private:
     LeafStatistics leafStatistics_;
     VoxelGrid grid_;
     PartialBricks leafAlbedo_;  // between the bricks and bricks_mip passes
+    std::uint64_t geometryBricksBuilds_ = 0;  // Octree::geometryBricksBuild of the last one
 };
 
 std::string formatVoxelMemory(const VoxelMemoryReport& report);
