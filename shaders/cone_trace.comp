@@ -48,5 +48,5 @@ void main() {
         return;
     }
     imageStore(uIndirect, cell, tracePixel(position.xyz, normalize(texelFetch(uNormal, pixel, 0).xyz)));
-    if (uDownscale > 1) imageStore(uTracedPixel, cell, uvec4(uint(pixel.x) | (uint(pixel.y) << 16)));
+    if (uDownscale > 1) imageStore(uTracedPixel, cell, uvec4(packTracedPixel(pixel)));
 }

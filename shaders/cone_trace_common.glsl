@@ -1,7 +1,5 @@
 // Shared by cone_trace.comp and cone_upsample.comp. Requires cone_march.glsl.
-
-// A block of cone_trace at half resolution that sees only sky traced no pixel.
-const uint NO_TRACED_PIXEL = 0xffffffffu;
+#include "traced_pixel.glsl"
 
 // What the cone passes did and saved, as 64-bit counts (low word, high word): samples taken,
 // samples that empty-space skipping saved (the steps the skipped nodes would have cost), pixels

@@ -43,7 +43,7 @@ void main() {
         const ivec2 cell = clamp(base + offset, ivec2(0), blocks - 1);
         const uint traced = texelFetch(uTracedPixel, cell, 0).r;
         if (traced == NO_TRACED_PIXEL) continue;
-        const ivec2 tracedPixel = ivec2(traced & 0xffffu, traced >> 16);
+        const ivec2 tracedPixel = unpackTracedPixel(traced);
         const vec3 tracedNormal = normalize(texelFetch(uNormal, tracedPixel, 0).xyz);
         const vec3 tracedPosition = texelFetch(uPosition, tracedPixel, 0).xyz;
         const float planeDistance = abs(dot(normal, tracedPosition - position.xyz)) * uVoxelScale;

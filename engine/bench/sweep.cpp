@@ -57,7 +57,7 @@ const std::vector<std::string>& parameterNames() {
     static const std::vector<std::string> names = {"voxel_levels", "cones",          "cone_aperture", "cone_step",
                                                    "cone_offset",  "cone_lift",      "bricks",        "light_view_res",
                                                    "pcf_radius",   "gi",             "bounces",       "samples",
-                                                   "gi_resolution", "shadow_res"};
+                                                   "gi_resolution", "shadow_res",    "gi_filter"};
     return names;
 }
 
@@ -93,6 +93,8 @@ void applyParameter(PointSettings& s, const std::string& name, const Json& v) {
         s.pixelSamples = integer(v, what, 1, kMaxPixelSamples);
     } else if (name == "shadow_res") {
         s.shadowMapResolution = integer(v, what, 16, kMaxImageSide);
+    } else if (name == "gi_filter") {
+        s.giFilter = float(number(v, what, 0.0, 64.0));
     } else if (name == "gi_resolution") {
         if (!v.is_string()) fail(what, " must be \"full\" or \"half\"");
         try {
@@ -122,6 +124,7 @@ std::string parameterValue(const PointSettings& s, const std::string& name) {
     if (name == "samples") return std::to_string(s.pixelSamples);
     if (name == "gi_resolution") return giResolutionName(s.giResolution);
     if (name == "shadow_res") return std::to_string(s.shadowMapResolution);
+    if (name == "gi_filter") return formatNumber(s.giFilter);
     fail("unknown parameter '", name, "'");
 }
 

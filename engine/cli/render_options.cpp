@@ -43,6 +43,10 @@ void addRenderSettingsOptions(CLI::App& command, RenderSettingsOptions& o) {
                        "pixels on their own surface (about 4x fewer cones, as close to the path tracer); full: at "
                        "every pixel")
         ->capture_default_str();
+    command.add_option("--gi-filter", o.giFilter,
+                       "width of the edge-aware filter of the indirect light along surfaces, in voxels (0: off); "
+                       "it removes the steps the octree's nodes print into the cones' result")
+        ->capture_default_str();
     command.add_option("--gi-scale", o.giScale, "artistic factor on indirect light (1 = physically consistent)")
         ->capture_default_str();
     command.add_option("--voxel-levels", o.voxelLevels, "octree resolution 2^L voxels per axis, L in 5..10")
@@ -71,6 +75,7 @@ RenderSettings renderSettingsFromOptions(const RenderSettingsOptions& o, const S
     settings.bounces = o.bounces;
     settings.cones = o.cones;
     settings.giResolution = parseGiResolution(o.giResolution);
+    settings.giFilter = o.giFilter;
     validateRenderSettings(settings);
     return settings;
 }

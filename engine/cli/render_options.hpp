@@ -28,6 +28,7 @@ struct RenderSettingsOptions {
     int bounces = 1;
     ConeSettings cones;
     std::string giResolution = "half";
+    float giFilter = kDefaultGiFilterVoxels;
     float giScale = 1.0f;
 };
 

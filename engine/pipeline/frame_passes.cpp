@@ -19,6 +19,7 @@ const char* inputName(Input input) {
         case Input::ConeSettings: return "cone settings";
         case Input::BounceSettings: return "bounce settings";
         case Input::GiResolution: return "GI resolution";
+        case Input::GiFilter: return "GI filter";
         case Input::DisplaySettings: return "display settings";
         case Input::ViewSettings: return "view settings";
         case Input::Count: break;
@@ -136,7 +137,7 @@ void gatherBounces(FrameResources& f) {
 void traceCones(FrameResources& f, const FrameView& v) {
     if (!f.coneTrace) f.coneTrace = std::make_unique<ConeTrace>(f.settings.width, f.settings.height);
     f.coneTrace->render(*f.gbuffer, f.svo->octree(), *f.radiance, frameCones(f.settings), f.settings.giResolution,
-                        v.sample);
+                        v.sample, f.settings.giFilter);
     f.statistics.cones = f.coneTrace->statistics();
 }
 
@@ -232,9 +233,9 @@ const PassTable kFramePasses = {{
          f.direct->render(*f.gbuffer, *f.scene, f.lights, f.lightViews.views(), f.settings.pcfRadius);
      }},
     {Pass::ConeTrace, "cone_trace", Stage::Camera,
-     {I::ConeSettings, I::GiResolution}, {R::GBuffer, R::RadianceBricks, R::BouncedRadiance}, {R::IndirectIrradiance},
+     {I::ConeSettings, I::GiResolution, I::GiFilter}, {R::GBuffer, R::RadianceBricks, R::BouncedRadiance}, {R::IndirectIrradiance},
      unlessConeTrace,
-     "cone_trace.comp, cone_upsample.comp",
+     "cone_trace.comp, indirect_filter.comp, cone_upsample.comp",
      traceCones},
     {Pass::VoxelView, "voxel_view", Stage::Camera,
      {I::Camera, I::OutputSize, I::ViewSettings}, {R::GeometryBricks, R::RadianceBricks, R::BouncedRadiance},

@@ -57,6 +57,7 @@ enum class Input {
     ConeSettings,    // cone set, aperture, step, offset, lift, bricks on/off
     BounceSettings,  // the number of bounces
     GiResolution,    // cones at every pixel or one per 2×2 block
+    GiFilter,        // the width of the cones' edge-aware filter
     DisplaySettings, // AOV, exposure, tone curve, GI scale, GI on/off (what composite shows)
     ViewSettings,    // debug view mode, level, bricks
     Count

@@ -33,6 +33,7 @@ void validateRenderSettings(const RenderSettings& s) {
         fail("--voxel-level ", s.voxelViewLevel, " is out of range; use 1..", s.voxelLevels, " (", s.voxelLevels,
              " = the voxels themselves)");
     validateConeSettings(s.cones);
+    validateGiFilter(s.giFilter);
     if (!std::isfinite(s.display.giScale) || s.display.giScale < 0.0f)
         fail("--gi-scale ", s.display.giScale, " must be a finite number ≥ 0");
     // 2^EV in float: beyond ±kMaxExposureEV it is 0 or Inf and the tone-mapped image garbage.

@@ -8,6 +8,7 @@
 
 #include "render/composite.hpp"
 #include "render/cone_trace.hpp"
+#include "render/indirect_filter.hpp"
 
 namespace vct {
 
@@ -27,6 +28,7 @@ struct RenderSettings {
     int bounces = 1;         // light bounces the indirect light holds (1..kMaxBounces)
     ConeSettings cones;
     GiResolution giResolution = GiResolution::Half;  // cones at one pixel per 2×2 block, or at every pixel
+    float giFilter = kDefaultGiFilterVoxels;  // the cones' edge-aware filter, σ along surfaces in voxels; 0: off
     int voxelLevels = 8;     // octree resolution 2^voxelLevels
     int voxelViewLevel = 0;  // level shown by the voxel views; 0 = voxelLevels (the voxels)
     bool bricks = true;      // trilinear in the bricks (else nearest sample for cones, raw node values for voxel views)

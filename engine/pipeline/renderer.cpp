@@ -41,6 +41,7 @@ void Renderer::setSettings(const RenderSettings& s) {
     if (s.bounces != old.bounces) bump(Input::BounceSettings);
     if (s.cones != old.cones || s.bricks != old.bricks) bump(Input::ConeSettings);
     if (s.giResolution != old.giResolution) bump(Input::GiResolution);
+    if (s.giFilter != old.giFilter) bump(Input::GiFilter);
     if (s.display != old.display || s.gi != old.gi) bump(Input::DisplaySettings);
     if (s.view != old.view || s.voxelViewLevel != old.voxelViewLevel || s.bricks != old.bricks)
         bump(Input::ViewSettings);

@@ -26,7 +26,7 @@ ConeStatistics ConeTrace::statistics() const {
 std::size_t ConeTrace::bytes() const {
     const std::size_t full = std::size_t(width_) * height_ * 16;
     const std::size_t blocks = std::size_t((width_ + 1) / 2) * ((height_ + 1) / 2);
-    return full + (traced_.id() ? blocks * (16 + 4) : 0);
+    return full + (traced_.id() ? blocks * (16 + 4) : 0) + (filter_ ? filter_->bytes() : 0);
 }
 
 GiResolution parseGiResolution(const std::string& name) {
@@ -81,7 +81,7 @@ void setConeMarchUniforms(gl::ComputeCall& call, const Octree& octree, const Rad
 }
 
 void ConeTrace::render(const GBuffer& gbuffer, const Octree& octree, const RadianceVolume& radiance,
-                       const ConeSettings& settings, GiResolution resolution, int rotation) {
+                       const ConeSettings& settings, GiResolution resolution, int rotation, float filterVoxels) {
     const bool half = resolution == GiResolution::Half;
     const int tracedWidth = half ? (width_ + 1) / 2 : width_, tracedHeight = half ? (height_ + 1) / 2 : height_;
     if (half && !traced_.id()) {
@@ -102,12 +102,20 @@ void ConeTrace::render(const GBuffer& gbuffer, const Octree& octree, const Radia
         .uniform("uDownscale", half ? 2 : 1)
         .uniform("uRotation", rotation & 3)
         .dispatchImage(tracedWidth, tracedHeight, GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+    // The filter runs on the traced image; a different image size (the other GI resolution) makes
+    // a new one.
+    GLuint traced = half ? traced_.id() : indirect_.id();
+    if (filterVoxels > 0.0f) {
+        if (!filter_ || filter_->width() != tracedWidth) filter_ = std::make_unique<IndirectFilter>(tracedWidth, tracedHeight);
+        traced = filter_->render(gbuffer, traced, half ? tracedPixel_.id() : 0, octree.grid.voxelSize, filterVoxels);
+    }
+    result_ = half ? indirect_.id() : traced;
     if (half) {
         gl::ComputeCall upsample(upsampleProgram_);
         setConeMarchUniforms(upsample, octree, radiance, settings);
         upsample.texture(gl::TEXTURE_GBUFFER_NORMAL, gbuffer.normal())
             .texture(gl::TEXTURE_GBUFFER_POSITION, gbuffer.position())
-            .texture(gl::TEXTURE_TRACED_IRRADIANCE, traced_.id())
+            .texture(gl::TEXTURE_TRACED_IRRADIANCE, traced)
             .texture(gl::TEXTURE_TRACED_PIXEL, tracedPixel_.id())
             .storage(gl::SSBO_CONE_COUNTERS, counters_)
             .image(gl::IMAGE_INDIRECT, indirect_.id(), GL_WRITE_ONLY, GL_RGBA32F)

@@ -1,6 +1,7 @@
 #pragma once
 // cone_trace pass (DESIGN §4 pass 12): indirect irradiance and ambient visibility per pixel by
 // diffuse cones through the radiance bricks.
+#include <memory>
 #include <string>
 
 #include "gl/compute.hpp"
@@ -8,6 +9,7 @@
 #include "lighting/radiance_volume.hpp"
 #include "render/cone_set.hpp"
 #include "render/gbuffer.hpp"
+#include "render/indirect_filter.hpp"
 
 namespace vct {
 
@@ -50,10 +52,11 @@ class ConeTrace {
 public:
     ConeTrace(int width, int height);
     // `rotation` turns which pixel of each block is traced at half resolution (the pixel sample,
-    // so that accumulated samples trace every pixel in turn).
+    // so that accumulated samples trace every pixel in turn). `filterVoxels`: the width of the
+    // edge-aware filter of what the cones traced (indirect_filter.hpp), 0: none.
     void render(const GBuffer& gbuffer, const Octree& octree, const RadianceVolume& radiance, const ConeSettings& settings,
-                GiResolution resolution, int rotation);
-    GLuint indirect() const { return indirect_.id(); }  // RGBA32F: irradiance, visibility
+                GiResolution resolution, int rotation, float filterVoxels);
+    GLuint indirect() const { return result_; }  // RGBA32F: irradiance, visibility
     ConeStatistics statistics() const;  // of the last render (reads back 32 bytes)
     std::size_t bytes() const;
 
@@ -63,6 +66,8 @@ private:
     gl::Texture traced_, tracedPixel_;  // half resolution only, made on first use
     gl::Program program_, upsampleProgram_;
     gl::Buffer counters_;
+    std::unique_ptr<IndirectFilter> filter_;  // sized for the traced image, made on first use
+    GLuint result_ = 0;                       // indirect_, or at full resolution the filter's image
 };
 
 }  // namespace vct

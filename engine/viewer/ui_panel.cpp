@@ -204,6 +204,8 @@ void settingsSection(ViewerState& state, bool& changed) {
         s.giResolution = halfResolution ? GiResolution::Half : GiResolution::Full;
         changed = true;
     }
+    changed |= ImGui::SliderFloat("GI filter (voxels, 0 = off)", &s.giFilter, 0.0f, 16.0f, "%.1f",
+                                  ImGuiSliderFlags_AlwaysClamp);
 
     static const char* const views[] = {"lit", "voxels (V)", "radiance (Shift+V)"};
     int view = int(s.view);
