@@ -74,8 +74,8 @@
     X(TEXTURE_OPACITY_PLUS, 3)       /* opacity of the slabs along +x +y +z (brick_layout.hpp) */ \
     X(TEXTURE_OPACITY_MINUS, 4)      /* along −x −y −z */                                         \
     X(TEXTURE_DIRECTIONAL_RADIANCE, 6) /* the radiance pool of the six directions */              \
-    X(TEXTURE_TRACED_IRRADIANCE, 12) /* cone_upsample: what cone_trace gathered per block */     \
-    X(TEXTURE_TRACED_PIXEL, 13)      /* cone_upsample: the pixel each block traced */             \
+    X(TEXTURE_TRACED_IRRADIANCE, 12) /* cone_upsample, indirect_filter: what the cones gathered */ \
+    X(TEXTURE_TRACED_PIXEL, 13)      /* cone_upsample, indirect_filter: the pixel each block traced */ \
     X(TEXTURE_VIEW_ALBEDO_BRICKS, 1) /* voxel_view: the albedo pool */                     \
     X(TEXTURE_LIGHT_POSITION, 0)     /* inject: the light-view map's photons */                   \
     X(TEXTURE_LIGHT_FLUX, 1)                                                                      \

@@ -2,9 +2,9 @@
 // The cones' edge-aware filter (part of the cone_trace pass, DESIGN §4 pass 12): the cones read
 // the octree's levels, so their result steps where a sample crosses a node's face; those steps
 // (blocks a few voxels wide) are error against the path tracer, while irradiance along one surface
-// varies slowly. The filter averages each traced point with the traced points on its own surface
-// within a few voxels (world distance, normal and tangent plane decide;
-// shaders/indirect_filter.comp) and leaves other surfaces alone. It runs on the image the cones
+// varies slowly. The filter fits each traced point's irradiance to the traced points on its own
+// surface within a few voxels (a plane by weighted least squares; world distance, normal and
+// tangent plane weight them: shaders/indirect_filter.comp) and leaves other surfaces alone. It runs on the image the cones
 // traced, before half-resolution cones are upsampled, so it costs a quarter there.
 #include "gl/objects.hpp"
 #include "render/gbuffer.hpp"
