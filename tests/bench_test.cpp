@@ -103,6 +103,20 @@ TEST(Bench, SweepExpandsOneParameterAtATime) {
     EXPECT_EQ(sweep.curveSeed, sweep.referenceSeed + 1) << "the curve's samples are independent of the reference's";
 }
 
+TEST(Bench, SweepTakesAViewOfItsOwn) {
+    const bench::SweepDefinition preset = bench::parseSweep(Json::parse(R"({"camera": "CameraMain"})"), "t");
+    EXPECT_EQ(preset.camera, "CameraMain");
+    EXPECT_FALSE(preset.eye || preset.target || preset.up || preset.fovDeg);
+    const bench::SweepDefinition own = bench::parseSweep(
+        Json::parse(R"({"camera": {"preset": "CameraMain", "eye": [0, 4.5, 0], "target": [20, 6, 3], "fov": 50}})"), "t");
+    EXPECT_EQ(own.camera, "CameraMain");
+    ASSERT_TRUE(own.eye && own.target && own.fovDeg);
+    EXPECT_EQ(*own.eye, glm::dvec3(0.0, 4.5, 0.0));
+    EXPECT_EQ(*own.target, glm::dvec3(20.0, 6.0, 3.0));
+    EXPECT_EQ(*own.fovDeg, 50.0);
+    EXPECT_FALSE(own.up) << "unset keys keep the preset's";
+}
+
 TEST(Bench, SweepRejectsTyposAndBadValues) {
     auto message = [](const char* text) {
         try {
@@ -113,6 +127,9 @@ TEST(Bench, SweepRejectsTyposAndBadValues) {
         return std::string("(no error)");
     };
     EXPECT_NE(message(R"({"sweeps": {}})").find("unknown key 'sweeps'"), std::string::npos);
+    EXPECT_NE(message(R"({"camera": {"eye": [1, 2]}})").find("three numbers"), std::string::npos);
+    EXPECT_NE(message(R"({"camera": {"position": [1, 2, 3]}})").find("unknown key 'position'"), std::string::npos);
+    EXPECT_NE(message(R"({"camera": 3})").find("preset name or an object"), std::string::npos);
     EXPECT_NE(message(R"({"sweep": {"cone": [1]}})").find("unknown parameter 'cone'"), std::string::npos);
     EXPECT_NE(message(R"({"sweep": {"cones": [7]}})").find("not a cone set"), std::string::npos);
     EXPECT_NE(message(R"({"sweep": {"voxel_levels": [11]}})").find("out of range"), std::string::npos);

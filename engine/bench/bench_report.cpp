@@ -481,7 +481,9 @@ std::string writeChart(const std::filesystem::path& script, const std::filesyste
     }
     // Third panel: the engine's points alone, so that their labels can be read.
     if (engineTime.second > 0.0) {
-        const double span = std::max(engineError.second - engineError.first, 1e-6 * engineError.second);
+        // At least 5 % of the error: one point alone (a sweep of the default only) still gets a
+        // y range gnuplot can draw, whatever digits the range is written with.
+        const double span = std::max({engineError.second - engineError.first, 0.05 * engineError.second, 1e-9});
         gp << "set offsets 0, 0, 0, 0\nunset logscale y\nset ytics auto\nset format y '%g'\n";
         gp << "set xtics (" << ticks125(engineTime) << ")\n";
         gp << "set xrange [" << num(engineTime.first / 1.3) << ":" << num(engineTime.second * 1.8) << "]\n";

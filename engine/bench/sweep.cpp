@@ -51,6 +51,30 @@ void checkKeys(const Json& object, const std::string& what, const std::set<std::
         }
 }
 
+glm::dvec3 point(const Json& v, const std::string& what) {
+    if (!v.is_array() || v.size() != 3) fail(what, " must be a list of three numbers [x, y, z]");
+    return {number(v[0], what, -1e30, 1e30), number(v[1], what, -1e30, 1e30), number(v[2], what, -1e30, 1e30)};
+}
+
+// "camera": a preset's name, or an object whose keys move the preset's view (checked again,
+// with the scene, when the camera is made).
+void parseCamera(const Json& camera, SweepDefinition& s) {
+    if (camera.is_string()) {
+        s.camera = camera.get<std::string>();
+        return;
+    }
+    if (!camera.is_object()) fail("'camera' must be a preset name or an object {\"preset\", \"eye\", \"target\", \"up\", \"fov\"}");
+    checkKeys(camera, "'camera'", {"preset", "eye", "target", "up", "fov"});
+    if (camera.contains("preset")) {
+        if (!camera["preset"].is_string()) fail("'camera.preset' must be a preset name");
+        s.camera = camera["preset"].get<std::string>();
+    }
+    if (camera.contains("eye")) s.eye = point(camera["eye"], "'camera.eye'");
+    if (camera.contains("target")) s.target = point(camera["target"], "'camera.target'");
+    if (camera.contains("up")) s.up = point(camera["up"], "'camera.up'");
+    if (camera.contains("fov")) s.fovDeg = number(camera["fov"], "'camera.fov'", 1e-3, 179.999);
+}
+
 }  // namespace
 
 const std::vector<std::string>& parameterNames() {
@@ -148,10 +172,7 @@ SweepDefinition parseSweep(const Json& j, const std::string& name, const std::fi
             if (!j["scene"].is_string()) fail("'scene' must be a string: cornell, sponza or a model path");
             s.scene = j["scene"].get<std::string>();
         }
-        if (j.contains("camera")) {
-            if (!j["camera"].is_string()) fail("'camera' must be a preset name");
-            s.camera = j["camera"].get<std::string>();
-        }
+        if (j.contains("camera")) parseCamera(j["camera"], s);
         if (j.contains("width")) s.width = integer(j["width"], "'width'", 1, kMaxImageSide);
         if (j.contains("height")) s.height = integer(j["height"], "'height'", 1, kMaxImageSide);
         if (j.contains("exposure")) s.exposureEV = number(j["exposure"], "'exposure'", -64, 64);

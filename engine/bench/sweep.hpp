@@ -8,7 +8,10 @@
 //   {
 //     "name": "cornell",                 optional; default: the file's stem. Output: bench_<name>.*
 //     "scene": "cornell",                cornell | sponza | a model path (relative to the file)
-//     "camera": "default",               a preset; "default" = the scene's first camera
+//     "camera": "default",               a preset; "default" = the scene's first camera; or a view of
+//                                        its own: {"preset": …, "eye": [x, y, z], "target": [x, y, z],
+//                                        "up": [x, y, z], "fov": degrees}, each key optional, on top of
+//                                        the preset (as `vct render --eye --target …`)
 //     "width": 320, "height": 240,
 //     "exposure": 0, "tonemap": "aces",  display transform of PSNR/SSIM (default: the scene's EV)
 //     "repeats": 3,                      warm full frames timed per point (the fastest counts)
@@ -30,6 +33,7 @@
 #include <utility>
 #include <vector>
 
+#include <glm/glm.hpp>
 #include <nlohmann/json.hpp>
 
 #include "pipeline/renderer.hpp"
@@ -59,6 +63,9 @@ struct SweepDefinition {
     std::filesystem::path file;  // where it was read from (empty when parsed from a string)
     std::string scene = "cornell";
     std::string camera = "default";
+    // A view of its own on top of the preset (the "camera" object's keys); unset: the preset's.
+    std::optional<glm::dvec3> eye, target, up;
+    std::optional<double> fovDeg;
     int width = 320, height = 240;
     std::optional<double> exposureEV;
     std::string tonemap = "aces";

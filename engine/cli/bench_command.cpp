@@ -116,6 +116,19 @@ void run(const BenchOptions& o) {
     bool presetFound = false;
     for (const auto& c : scene.cameras) presetFound = presetFound || c.name == sweep.camera;
     if (presetFound || (sweep.camera != "default" && !sweep.camera.empty())) camera = scene.camera(sweep.camera);
+    if (sweep.eye) camera.eye = *sweep.eye;
+    if (sweep.target) camera.target = *sweep.target;
+    if (sweep.up) camera.up = *sweep.up;
+    if (sweep.fovDeg) camera.fovYDeg = *sweep.fovDeg;
+    if (sweep.eye || sweep.target || sweep.up || sweep.fovDeg) {
+        try {
+            validateCamera(camera);
+        } catch (const Error& e) {
+            fail("the camera of ", sweepFile.string(), ": ", e.what());
+        }
+        camera.name = concat("eye (", camera.eye.x, ", ", camera.eye.y, ", ", camera.eye.z, ") to (", camera.target.x,
+                             ", ", camera.target.y, ", ", camera.target.z, ")");
+    }
     const double exposure = sweep.exposureEV.value_or(scene.exposureEV);
     const metrics::DisplaySettings display{exposure, curve};
 
