@@ -17,7 +17,7 @@ struct RenderSettingsOptions {
     std::string toneCurve = "aces";
     std::optional<double> exposureEV;  // default: the scene's
     int lightViewResolution = 0;
-    int shadowMapResolution = 4096;
+    int shadowMapResolution = RenderSettings{}.shadowMapResolution;
     int pcfRadius = 1;
     std::string view = "lit";
     int voxelLevels = 8;

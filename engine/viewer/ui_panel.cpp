@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <iterator>
 
 #include "viewer/key_bindings.hpp"
 #include "viewer/light_control.hpp"
@@ -172,13 +173,14 @@ bool comboOf(const char* label, int& index, const char* const items[], int count
     return ImGui::Combo(label, &index, items, count);
 }
 
-// A map resolution from a list of powers of two, with `withAuto` also 0: "auto", follow the voxels
+// A map resolution from a list (powers of two and the shadow map's default 6144), with `withAuto`
+// also 0: "auto", follow the voxels
 // (the photons' default). A value from the command line that is not in the list shows empty until
 // one is picked.
 bool resolutionCombo(const char* label, int& value, bool withAuto) {
-    static const int resolutions[] = {0, 256, 512, 1024, 2048, 4096, 8192};
-    static const char* const names[] = {"auto", "256", "512", "1024", "2048", "4096", "8192"};
-    const int first = withAuto ? 0 : 1, count = 7 - first;
+    static const int resolutions[] = {0, 256, 512, 1024, 2048, 4096, 6144, 8192};
+    static const char* const names[] = {"auto", "256", "512", "1024", "2048", "4096", "6144", "8192"};
+    const int first = withAuto ? 0 : 1, count = int(std::size(resolutions)) - first;
     int index = int(std::find(std::begin(resolutions) + first, std::end(resolutions), value) - std::begin(resolutions)) - first;
     if (index == count) index = -1;
     if (!comboOf(label, index, names + first, count)) return false;
