@@ -20,9 +20,9 @@ struct RenderSettings {
     int height = 720;
     int lightViewResolution = 0;     // texels per side of each light-view (photon) map; 0: photonMapResolution()
     // Texels per side of each shadow map (at least the photons'): the direct light's shadow edges.
-    // 6144 is the smallest that brings 16 pixel samples of Sponza's direct light within 0.012 RMSE
-    // of the path tracer (docs/benchmark.md); 8192 costs twice the memory for a little more.
-    int shadowMapResolution = 6144;
+    // Finer maps bring many pixel samples closer to the path tracer but alias with one sample, as
+    // the filter spans a fixed number of texels, not the pixel (docs/benchmark.md).
+    int shadowMapResolution = 4096;
     int pcfRadius = 1;               // shadow filter: (2r+1)² hardware-bilinear taps
     DisplaySettings display;
     ViewMode view = ViewMode::Lit;
