@@ -15,10 +15,9 @@ layout(binding = TEXTURE_TRACED_IRRADIANCE) uniform sampler2D uTraced;
 layout(binding = TEXTURE_TRACED_PIXEL) uniform usampler2D uTracedPixel;
 layout(rgba32f, binding = IMAGE_INDIRECT) uniform writeonly image2D uIndirect;
 
-// Weights of a neighbour: normals within ~25° keep most of their weight (cos⁸), and a point one
-// voxel off the tangent plane keeps e⁻¹ of it; below kMinWeight the pixel has no neighbour on its
-// surface.
-const float kNormalPower = 8.0;
+// Weights of a neighbour (sameSurfaceWeight): a point one voxel off the tangent plane keeps e⁻¹
+// of it; below kMinWeight the pixel has no neighbour on its surface.
+const float kPlaneVoxels = 1.0;
 const float kMinWeight = 0.05;
 
 void main() {
@@ -46,10 +45,9 @@ void main() {
         const ivec2 tracedPixel = unpackTracedPixel(traced);
         const vec3 tracedNormal = normalize(texelFetch(uNormal, tracedPixel, 0).xyz);
         const vec3 tracedPosition = texelFetch(uPosition, tracedPixel, 0).xyz;
-        const float planeDistance = abs(dot(normal, tracedPosition - position.xyz)) * uVoxelScale;
         const float bilinear = (offset.x == 1 ? f.x : 1.0 - f.x) * (offset.y == 1 ? f.y : 1.0 - f.y);
-        const float weight = bilinear * pow(max(dot(normal, tracedNormal), 0.0), kNormalPower) *
-                             exp(-planeDistance * planeDistance);
+        const float weight = bilinear * sameSurfaceWeight(normal, tracedNormal,
+                                                          (tracedPosition - position.xyz) * uVoxelScale, kPlaneVoxels);
         sum += weight * texelFetch(uTraced, cell, 0);
         weightSum += weight;
     }

@@ -27,9 +27,7 @@ uniform int uTapSpacing;    // in cells
 uniform float uVoxelScale;  // voxels per world unit
 uniform float uSigma;       // voxels
 
-// Normals within ~25° keep most of their weight (cos⁸, as in cone_upsample.comp). A point two
-// voxels off the tangent plane keeps e⁻¹: a parallel surface a step away (a floor under a table,
-// seen beside it) is another surface, however close its points lie.
+// A tap two voxels off the tangent plane keeps e⁻¹ of its weight (sameSurfaceWeight).
 const float kPlaneVoxels = 2.0;
 const float kTapWeight[2] = float[2](0.5, 0.25);
 // The slope is damped by this share of the taps' weight (ridge regression): with few taps, or
@@ -74,11 +72,8 @@ void main() {
                 !pointOf(tap, tapPosition, tapNormal))
                 continue;
             const vec3 offset = (tapPosition - position) * uVoxelScale;
-            const float offPlane = dot(normal, offset) / kPlaneVoxels;
-            const float alike = max(dot(normal, tapNormal), 0.0);
-            const float alike2 = alike * alike, alike4 = alike2 * alike2;
-            const float w = kTapWeight[abs(dx)] * kTapWeight[abs(dy)] * alike4 * alike4 *
-                            exp(-dot(offset, offset) * inverseTwoSigma2 - offPlane * offPlane);
+            const float w = kTapWeight[abs(dx)] * kTapWeight[abs(dy)] * exp(-dot(offset, offset) * inverseTwoSigma2) *
+                            sameSurfaceWeight(normal, tapNormal, offset, kPlaneVoxels);
             const vec4 value = texelFetch(uIrradiance, tap, 0);
             const float x = float(dx), y = float(dy);
             s00 += w; s01 += w * x; s02 += w * y; s11 += w * x * x; s12 += w * x * y; s22 += w * y * y;

@@ -106,15 +106,15 @@ TEST(Bench, SweepExpandsOneParameterAtATime) {
 TEST(Bench, SweepTakesAViewOfItsOwn) {
     const bench::SweepDefinition preset = bench::parseSweep(Json::parse(R"({"camera": "CameraMain"})"), "t");
     EXPECT_EQ(preset.camera, "CameraMain");
-    EXPECT_FALSE(preset.eye || preset.target || preset.up || preset.fovDeg);
+    EXPECT_FALSE(preset.view.any());
     const bench::SweepDefinition own = bench::parseSweep(
         Json::parse(R"({"camera": {"preset": "CameraMain", "eye": [0, 4.5, 0], "target": [20, 6, 3], "fov": 50}})"), "t");
     EXPECT_EQ(own.camera, "CameraMain");
-    ASSERT_TRUE(own.eye && own.target && own.fovDeg);
-    EXPECT_EQ(*own.eye, glm::dvec3(0.0, 4.5, 0.0));
-    EXPECT_EQ(*own.target, glm::dvec3(20.0, 6.0, 3.0));
-    EXPECT_EQ(*own.fovDeg, 50.0);
-    EXPECT_FALSE(own.up) << "unset keys keep the preset's";
+    ASSERT_TRUE(own.view.eye && own.view.target && own.view.fovYDeg);
+    EXPECT_EQ(*own.view.eye, glm::dvec3(0.0, 4.5, 0.0));
+    EXPECT_EQ(*own.view.target, glm::dvec3(20.0, 6.0, 3.0));
+    EXPECT_EQ(*own.view.fovYDeg, 50.0);
+    EXPECT_FALSE(own.view.up) << "unset keys keep the preset's";
 }
 
 TEST(Bench, SweepRejectsTyposAndBadValues) {

@@ -69,10 +69,10 @@ void parseCamera(const Json& camera, SweepDefinition& s) {
         if (!camera["preset"].is_string()) fail("'camera.preset' must be a preset name");
         s.camera = camera["preset"].get<std::string>();
     }
-    if (camera.contains("eye")) s.eye = point(camera["eye"], "'camera.eye'");
-    if (camera.contains("target")) s.target = point(camera["target"], "'camera.target'");
-    if (camera.contains("up")) s.up = point(camera["up"], "'camera.up'");
-    if (camera.contains("fov")) s.fovDeg = number(camera["fov"], "'camera.fov'", 1e-3, 179.999);
+    if (camera.contains("eye")) s.view.eye = point(camera["eye"], "'camera.eye'");
+    if (camera.contains("target")) s.view.target = point(camera["target"], "'camera.target'");
+    if (camera.contains("up")) s.view.up = point(camera["up"], "'camera.up'");
+    if (camera.contains("fov")) s.view.fovYDeg = number(camera["fov"], "'camera.fov'", 1e-3, 179.999);
 }
 
 }  // namespace

@@ -33,10 +33,10 @@
 #include <utility>
 #include <vector>
 
-#include <glm/glm.hpp>
 #include <nlohmann/json.hpp>
 
 #include "pipeline/renderer.hpp"
+#include "scene/camera.hpp"
 
 namespace vct::bench {
 
@@ -63,9 +63,8 @@ struct SweepDefinition {
     std::filesystem::path file;  // where it was read from (empty when parsed from a string)
     std::string scene = "cornell";
     std::string camera = "default";
-    // A view of its own on top of the preset (the "camera" object's keys); unset: the preset's.
-    std::optional<glm::dvec3> eye, target, up;
-    std::optional<double> fovDeg;
+    CameraChanges view;  // the "camera" object's keys on top of the preset
+
     int width = 320, height = 240;
     std::optional<double> exposureEV;
     std::string tonemap = "aces";

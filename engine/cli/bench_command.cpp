@@ -116,13 +116,9 @@ void run(const BenchOptions& o) {
     bool presetFound = false;
     for (const auto& c : scene.cameras) presetFound = presetFound || c.name == sweep.camera;
     if (presetFound || (sweep.camera != "default" && !sweep.camera.empty())) camera = scene.camera(sweep.camera);
-    if (sweep.eye) camera.eye = *sweep.eye;
-    if (sweep.target) camera.target = *sweep.target;
-    if (sweep.up) camera.up = *sweep.up;
-    if (sweep.fovDeg) camera.fovYDeg = *sweep.fovDeg;
-    if (sweep.eye || sweep.target || sweep.up || sweep.fovDeg) {
+    if (sweep.view.any()) {
         try {
-            validateCamera(camera);
+            camera = changedCamera(camera, sweep.view);
         } catch (const Error& e) {
             fail("the camera of ", sweepFile.string(), ": ", e.what());
         }

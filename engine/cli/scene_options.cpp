@@ -108,13 +108,12 @@ Scene loadSceneFromOptions(const SceneOptions& o) {
 }
 
 Camera cameraFromOptions(const SceneOptions& o, const Scene& scene) {
-    Camera camera = o.cameraPreset.empty() ? scene.cameras.at(0) : scene.camera(o.cameraPreset);
-    if (!o.eye.empty()) camera.eye = toVec3(o.eye, "--eye");
-    if (!o.target.empty()) camera.target = toVec3(o.target, "--target");
-    if (!o.up.empty()) camera.up = toVec3(o.up, "--up");
-    if (o.fovDeg) camera.fovYDeg = *o.fovDeg;
-    validateCamera(camera);
-    return camera;
+    CameraChanges changes;
+    if (!o.eye.empty()) changes.eye = toVec3(o.eye, "--eye");
+    if (!o.target.empty()) changes.target = toVec3(o.target, "--target");
+    if (!o.up.empty()) changes.up = toVec3(o.up, "--up");
+    changes.fovYDeg = o.fovDeg;
+    return changedCamera(o.cameraPreset.empty() ? scene.cameras.at(0) : scene.camera(o.cameraPreset), changes);
 }
 
 }  // namespace vct::cli

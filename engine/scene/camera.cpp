@@ -6,6 +6,15 @@
 #include "core/vector_text.hpp"
 
 namespace vct {
+Camera changedCamera(Camera camera, const CameraChanges& changes) {
+    if (changes.eye) camera.eye = *changes.eye;
+    if (changes.target) camera.target = *changes.target;
+    if (changes.up) camera.up = *changes.up;
+    if (changes.fovYDeg) camera.fovYDeg = *changes.fovYDeg;
+    validateCamera(camera);
+    return camera;
+}
+
 void validateCamera(const Camera& camera) {
     const std::string what = concat("camera '", camera.name, "'");
     if (!isUsableCoordinate(camera.eye))

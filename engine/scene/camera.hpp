@@ -3,6 +3,7 @@
 // to the scene-local frame (world − Scene::origin) before going to float, so a scene far from
 // the world origin renders exactly like one centred on it.
 #include <glm/glm.hpp>
+#include <optional>
 #include <string>
 
 namespace vct {
@@ -20,5 +21,16 @@ struct Camera {
 // Throws vct::Error when eye/target/up/fov are non-finite, eye == target, up ∥ view direction
 // or fov outside (0, 180).
 void validateCamera(const Camera& camera);
+
+// A view of its own on top of a preset (`vct render --eye --target --up --fov`, a sweep's camera
+// object): the parts given replace the preset's.
+struct CameraChanges {
+    std::optional<glm::dvec3> eye, target, up;
+    std::optional<double> fovYDeg;
+
+    bool any() const { return eye || target || up || fovYDeg; }
+};
+// `preset` with `changes` applied; throws as validateCamera.
+Camera changedCamera(Camera preset, const CameraChanges& changes);
 
 }  // namespace vct

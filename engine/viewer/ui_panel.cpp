@@ -173,10 +173,9 @@ bool comboOf(const char* label, int& index, const char* const items[], int count
     return ImGui::Combo(label, &index, items, count);
 }
 
-// A map resolution from a list (powers of two and the shadow map's default 6144), with `withAuto`
-// also 0: "auto", follow the voxels
-// (the photons' default). A value from the command line that is not in the list shows empty until
-// one is picked.
+// A map resolution from a list (powers of two, and 6144 between the two finest), with `withAuto`
+// also 0: "auto", follow the voxels (the photons' default). A value from the command line that is
+// not in the list shows empty until one is picked.
 bool resolutionCombo(const char* label, int& value, bool withAuto) {
     static const int resolutions[] = {0, 256, 512, 1024, 2048, 4096, 6144, 8192};
     static const char* const names[] = {"auto", "256", "512", "1024", "2048", "4096", "6144", "8192"};
