@@ -13,6 +13,44 @@ layout(rgba32f, binding = IMAGE_DIRECT) uniform image2D uDirect;
 
 uniform LightParams uLight;
 uniform int uAccumulate;
+uniform vec3 uCameraEye;        // scene-local
+uniform float uPixelWidth;      // a pixel's width at distance 1 from the eye
+uniform float uSampleFootprint; // 1: the first sample; < 1: a later one's share of the pixel (pixel_samples.hpp)
+
+// The span of the pixel sample on its surface, as two vectors in the tangent plane from the
+// neighbouring pixels' points (the pixel's footprint is the parallelogram ±½ of each): the first
+// sample, alone in a plain frame, integrates its whole pixel; a later, jittered one a share of the
+// shorter axis, isotropically, as its texture lookups do (material.glsl): the jitter integrates
+// the rest. A neighbour far away or sky (a silhouette) is no part of the footprint; one close by
+// on another surface (a floor's contact line with a wall or a box) would put taps under that
+// surface, where the camera sees no floor and the map sees shadow: there, and where an axis has
+// no neighbour on the pixel's surface, the span is 0 and the filter keeps its texels.
+void sampleSpan(ivec2 pixel, vec3 p, vec3 n, out vec3 spanX, out vec3 spanY) {
+    spanX = spanY = vec3(0.0);
+    float facing = distance(p, uCameraEye) * uPixelWidth;
+    ivec2 last = imageSize(uDirect) - 1;
+    vec3 span[2] = vec3[2](vec3(0.0), vec3(0.0));
+    for (int y = -1; y <= 1; ++y)
+        for (int x = -1; x <= 1; ++x) {
+            ivec2 next = clamp(pixel + ivec2(x, y), ivec2(0), last);
+            vec4 q = texelFetch(uPosition, next, 0);
+            vec3 offset = q.xyz - p;
+            float d = length(offset);
+            if (q.w <= 0.0 || d >= 8.0 * facing || d == 0.0) continue;
+            bool samePlane = dot(texelFetch(uNormal, next, 0).xyz, n) >= 0.9 && abs(dot(offset, n)) <= 0.25 * d;
+            if (!samePlane) return;
+            if (y == 0) span[0] = float(x) * offset;
+            if (x == 0) span[1] = float(y) * offset;
+        }
+    if (span[0] == vec3(0.0) || span[1] == vec3(0.0)) return;
+    if (uSampleFootprint < 1.0) {
+        float shorter = min(length(span[0]), length(span[1])) * uSampleFootprint;
+        span[0] = normalize(span[0]) * shorter;
+        span[1] = normalize(span[1]) * shorter;
+    }
+    spanX = span[0];
+    spanY = span[1];
+}
 
 void main() {
     ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
@@ -26,9 +64,12 @@ void main() {
         float distanceToLight;
         vec3 irradiance = incidentIrradiance(uLight, position.xyz, toLight, distanceToLight);
         float cosTheta = dot(n, toLight);
-        if (cosTheta > 0.0 && any(greaterThan(irradiance, vec3(0.0))))
+        if (cosTheta > 0.0 && any(greaterThan(irradiance, vec3(0.0)))) {
+            vec3 spanX, spanY;
+            sampleSpan(pixel, position.xyz, n, spanX, spanY);
             radiance = albedo / PI * irradiance * cosTheta *
-                       shadowVisibility(position.xyz, n, toLight, distanceToLight);
+                       shadowVisibility(position.xyz, n, toLight, distanceToLight, spanX, spanY);
+        }
     }
     if (uAccumulate != 0) radiance += imageLoad(uDirect, pixel).rgb;
     imageStore(uDirect, pixel, vec4(radiance, 1.0));

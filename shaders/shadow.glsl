@@ -4,7 +4,7 @@ layout(binding = TEXTURE_SHADOW_MAP) uniform sampler2DShadow uShadowMap;  // com
 uniform mat4 uLightViewProjection;
 uniform float uShadowTexelSize;      // texel edge in metres (directional) or at distance 1 (spot)
 uniform int uShadowPerspective;
-uniform int uPcfRadius;              // taps per side = 2r + 1
+uniform int uPcfRadius;              // taps per side = 2r + 1 (where the pixel is narrower)
 
 // Pair `pair` (0..r) of the PCF filter along one axis (shadowVisibility): the offset of its
 // bilinear comparison from the pair's first texel, and its weight.
@@ -44,7 +44,11 @@ vec2 receiverDepthSlope(vec3 p, vec3 n, float step, vec3 centre, vec2 size, floa
 // normal stays small on purpose: it moves the lookup sideways in the map, and at grazing light
 // a sideways texel moves the shadow edge of an overhang along the wall by several texels.
 // Everything scales with the texel, so it works at any scene scale.
-float shadowVisibility(vec3 p, vec3 n, vec3 toLight, float distanceToLight) {
+// `spanX`, `spanY`: the pixel sample's footprint on the surface, the parallelogram of ±½ of each
+// (world units; 0 for none). Where it covers more of the map than the filter's 2r + 1 texels (a
+// map finer than the pixel would otherwise alias its shadow edges), the filter becomes a grid of
+// bilinear comparisons over it instead, each at the depth the surface has there.
+float shadowVisibility(vec3 p, vec3 n, vec3 toLight, float distanceToLight, vec3 spanX, vec3 spanY) {
     float texel = uShadowTexelSize * (uShadowPerspective != 0 ? distanceToLight : 1.0);
     vec3 offsetPoint = p + n * (0.25 * texel) + toLight * texel;
     if ((uLightViewProjection * vec4(offsetPoint, 1.0)).w <= 0.0) return 0.0;  // behind a spot light
@@ -56,11 +60,30 @@ float shadowVisibility(vec3 p, vec3 n, vec3 toLight, float distanceToLight) {
     float texelDepth = abs(shadowMapPoint(offsetPoint + toLight * texel, size).z - centre.z);
     vec2 slope = receiverDepthSlope(offsetPoint, n, texel, centre, size, 32.0 * texelDepth);
     float margin = abs(slope.x) + abs(slope.y);
+    vec3 mapX = shadowMapPoint(offsetPoint + spanX, size) - centre;
+    vec3 mapY = shadowMapPoint(offsetPoint + spanY, size) - centre;
+    float filterTexels = float(2 * uPcfRadius + 1);
+    float extent = max(length(mapX.xy), length(mapY.xy));
+    if (extent > filterTexels) {
+        // cells × cells comparisons at the centres of as many cells of the footprint, about three
+        // texels apart up to 5 × 5 (finer grids changed no measured image), each blurred by its
+        // bilinear tent.
+        int cells = clamp(int(ceil(extent / 3.0)), 2 * uPcfRadius + 1, 5);
+        float lit = 0.0;
+        for (int y = 0; y < cells; ++y)
+            for (int x = 0; x < cells; ++x) {
+                vec2 cell = (vec2(x, y) + 0.5) / float(cells) - 0.5;
+                vec3 at = centre + cell.x * mapX + cell.y * mapY;
+                lit += texture(uShadowMap, vec3((at.xy + 0.5) / size, at.z + margin));
+            }
+        return lit / float(cells * cells);
+    }
     // The filter: (2r + 1)² bilinear comparisons one texel apart, a box of 2r + 1 texels blurred
     // by the bilinear tent. Per axis that weighs the 2r + 2 texels around the point 1 − f, 1, …,
     // 1, f (f the point's fraction between texel centres); taken in pairs of neighbouring texels,
     // each pair is one bilinear comparison placed between them in proportion to their weights, so
     // (r + 1)² lookups give the same filter as (2r + 1)².
+    float taps = filterTexels * filterTexels;
     vec2 first = floor(centre.xy) - float(uPcfRadius), f = centre.xy - floor(centre.xy);
     float lit = 0.0;
     for (int y = 0; y <= uPcfRadius; ++y) {
@@ -72,6 +95,5 @@ float shadowVisibility(vec3 p, vec3 n, vec3 toLight, float distanceToLight) {
             lit += xPair.y * yPair.y * texture(uShadowMap, vec3((at + 0.5) / size, surfaceDepth));
         }
     }
-    float taps = float((2 * uPcfRadius + 1) * (2 * uPcfRadius + 1));
     return lit / taps;
 }

@@ -128,21 +128,23 @@ TEST(DirectLighting, PointLightOnPlaneMatchesInverseSquareAcrossItsCubeFaces) {
 namespace {
 // The pixel of world point p in the slab scenes' view (--eye 0,2.5,3.5 --target 0,0,0 --fov 50,
 // 128×96), for the shadow tests.
-glm::ivec2 slabScenePixel(glm::dvec3 p) {
+glm::ivec2 slabScenePixel(glm::dvec3 p, int width = 128, int height = 96) {
     const glm::dvec3 eye(0, 2.5, 3.5), forward = glm::normalize(-eye);
     const glm::dvec3 right = glm::normalize(glm::cross(forward, glm::dvec3(0, 1, 0)));
     const glm::dvec3 up = glm::cross(right, forward);
     const glm::dvec3 v = p - eye;
     const double f = 1.0 / std::tan(glm::radians(25.0));
-    const double x = glm::dot(v, right) / glm::dot(v, forward) * f / (128.0 / 96.0);
+    const double x = glm::dot(v, right) / glm::dot(v, forward) * f / (double(width) / height);
     const double y = glm::dot(v, up) / glm::dot(v, forward) * f;
-    return glm::ivec2(int((x * 0.5 + 0.5) * 128), int((0.5 - y * 0.5) * 96));
+    return glm::ivec2(int((x * 0.5 + 0.5) * width), int((0.5 - y * 0.5) * height));
 }
 }  // namespace
 
-// A shadow edge is as sharp as the shadow map's texels: with the photons' coarse map the slab's
-// edge is blurred over several texels; a finer shadow map of its own (--shadow-res) puts it back
-// where the geometry says, while the photons (and so the indirect light) stay the same.
+// A shadow edge is as sharp as the shadow map's texels or the pixel, whichever is wider: with the
+// photons' coarse map the slab's edge is blurred over several texels; a finer shadow map of its
+// own (--shadow-res) puts it back where the geometry says, while the photons (and so the indirect
+// light) stay the same. The fine map is seen at 512×384, where a pixel spans about 1.5 cm of the
+// floor along the view; at 128×96 the pixel's 6 cm would be the penumbra (the filter spans it).
 TEST(DirectLighting, FinerShadowMapSharpensTheShadowEdge) {
     const auto dir = test::testDir();
     test::ObjWriter obj;
@@ -157,32 +159,76 @@ TEST(DirectLighting, FinerShadowMapSharpensTheShadowEdge) {
         int penumbraSteps = 0;
         double halfLightZ = 0.0;
     };
-    auto edge = [&](const std::string& resolutions, const std::string& name) {
+    auto edge = [&](const std::string& resolutions, const std::string& name, int width, int height) {
         const auto out = dir / name;
         const auto result = test::runVct("render -q --scene " + model.string() +
-                                         " --gi off --eye 0,2.5,3.5 --target 0,0,0 --fov 50 --width 128 --height 96"
-                                         " --sun-dir 0,-1,0 --sun-irradiance 3 --aov direct " + resolutions +
+                                         " --gi off --eye 0,2.5,3.5 --target 0,0,0 --fov 50 --width " + std::to_string(width) +
+                                         " --height " + std::to_string(height) + " --sun-dir 0,-1,0 --sun-irradiance 3 --aov direct " + resolutions +
                                          " --hdr-out " + out.string() + ".pfm --out " + out.string() + ".png");
         EXPECT_EQ(result.exitCode, 0) << result.output;
         const ImageF image = readHdrImage(out.string() + ".pfm");
         Edge e;
         for (int step = 0; step <= 50; ++step) {
             const double z = 0.35 + 0.01 * step;
-            const glm::ivec2 p = slabScenePixel({0.0, 0.0, z});
+            const glm::ivec2 p = slabScenePixel({0.0, 0.0, z}, width, height);
             const double value = image.at(p.x, p.y)[0] / lit;
             if (value > 0.1 && value < 0.9) ++e.penumbraSteps;
             if (e.halfLightZ == 0.0 && value >= 0.5) e.halfLightZ = z;
         }
         return e;
     };
-    const Edge coarse = edge("--light-view-res 64 --shadow-res 64", "coarse");
-    const Edge fine = edge("--light-view-res 64 --shadow-res 1024", "fine");
+    const Edge coarse = edge("--light-view-res 64 --shadow-res 64", "coarse", 128, 96);
+    const Edge fine = edge("--light-view-res 64 --shadow-res 1024", "fine", 512, 384);
     std::printf("[ shadow   ] penumbra along the floor: %d cm with the photons' 64² map, %d cm with a 1024² shadow "
                 "map; half light at z = %.2f and %.2f (edge at 0.50)\n",
                 coarse.penumbraSteps, fine.penumbraSteps, coarse.halfLightZ, fine.halfLightZ);
     EXPECT_GE(coarse.penumbraSteps, 10);
     EXPECT_LE(fine.penumbraSteps, 4);
     EXPECT_NEAR(fine.halfLightZ, 0.5, 0.03);
+}
+
+// One sample per pixel of a shadow edge finer than the pixel: the shadow filter spans the pixel's
+// footprint on the floor, so each pixel shows the share of it that is lit, as the path tracer's
+// pixel-area average does, rather than whether its centre is. The edge is a triangle's diagonal
+// (x + z = 0 under a vertical sun), oblique to the pixel grid, so it crosses pixels at every
+// fraction; the 1024² map's texels are 6 times finer than the pixels (128×96, about 4 × 6 cm).
+TEST(DirectLighting, OneSampleOfAShadowEdgeShowsTheLitShareOfItsPixel) {
+    const auto dir = test::testDir();
+    test::ObjWriter obj;
+    obj.material("white", glm::vec3(0.6f));
+    obj.floor(0.0f, 3.0f);
+    obj.triangle({-1.0f, 1.0f, -1.0f}, {-1.0f, 1.0f, 1.0f}, {1.0f, 1.0f, -1.0f});
+    const auto model = obj.write(dir);
+    const std::string view = " --scene " + model.string() +
+                             " --eye 0,2.5,3.5 --target 0,0,0 --fov 50 --width 128 --height 96"
+                             " --sun-dir 0,-1,0 --sun-irradiance 3 ";
+    const auto engine = dir / "engine.pfm", truth = dir / "reference.pfm";
+    const auto r1 = test::runVct("render -q --gi off --aov direct --light-view-res 64 --shadow-res 1024" + view +
+                                 "--hdr-out " + engine.string() + " --out " + (dir / "engine.png").string());
+    ASSERT_EQ(r1.exitCode, 0) << r1.output;
+    const auto r2 = test::runVct("reference -q --bounces 0 --spp 256" + view + "--out " + truth.string());
+    ASSERT_EQ(r2.exitCode, 0) << r2.output;
+    const ImageF a = readHdrImage(engine), b = readHdrImage(truth);
+    const double lit = 0.6 / glm::pi<double>() * 3.0;
+    // The pixels whose footprint the edge crosses (the reference neither lit nor dark there), away
+    // from the triangle's other edges, which the camera sees at the floor's contact.
+    double error = 0.0;
+    int edgePixels = 0;
+    for (double t = -0.6; t <= 0.6; t += 0.01) {
+        const glm::ivec2 p = slabScenePixel({t, 0.0, -t});
+        for (int dy = -2; dy <= 2; ++dy) {
+            const double truthShare = b.at(p.x, p.y + dy)[0] / lit;
+            if (truthShare < 0.05 || truthShare > 0.95) continue;
+            error += std::abs(a.at(p.x, p.y + dy)[0] / lit - truthShare);
+            ++edgePixels;
+        }
+    }
+    ASSERT_GT(edgePixels, 0);
+    error /= edgePixels;
+    std::printf("[ shadow   ] oblique edge, one sample: %d pixel visits across it, mean |engine - reference| %.3f of "
+                "the lit floor (a centre's lit-or-not would be about 0.25)\n",
+                edgePixels, error);
+    EXPECT_LT(error, 0.1);
 }
 
 // A wall lit at 15° from its plane under a ledge that sticks out 0.4 m at 2 m: the ledge shadows

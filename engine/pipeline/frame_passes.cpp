@@ -229,8 +229,9 @@ const PassTable kFramePasses = {{
     {Pass::DirectLighting, "direct_lighting", Stage::Camera,
      {I::Lights, I::ShadowSettings}, {R::GBuffer, R::LightViewMaps}, {R::DirectRadiance}, unlessLitView,
      "direct_lighting.comp",
-     [](FrameResources& f, const FrameView&) {
-         f.direct->render(*f.gbuffer, *f.scene, f.lights, f.lightViews.views(), f.settings.pcfRadius);
+     [](FrameResources& f, const FrameView& v) {
+         f.direct->render(*f.gbuffer, *f.scene, f.lights, f.lightViews.views(), f.settings.pcfRadius, v.transform,
+                          v.sample);
      }},
     {Pass::ConeTrace, "cone_trace", Stage::Camera,
      {I::ConeSettings, I::GiResolution, I::GiFilter}, {R::GBuffer, R::RadianceBricks, R::BouncedRadiance}, {R::IndirectIrradiance},
