@@ -2,22 +2,22 @@
 set terminal pngcairo size 2100,700 enhanced font 'DejaVu Sans,10'
 set output "bench_sponza_view1.png"
 $engine << EOD
-2129 0.0384306 0.0150514 "default"
+2046 0.0347579 0.0150514 "default"
 EOD
 $pathtracer << EOD
-47.45 0.114991 0.0724976 "1"
-181.1 0.0620866 0.0362574 "4"
-724 0.0319485 0.0184464 "16"
-2964 0.0165689 0.00965696 "64"
+43.32 0.114991 0.0724976 "1"
+169.9 0.0620866 0.0362574 "4"
+669.6 0.0319485 0.0184464 "16"
+2665 0.0165689 0.00965696 "64"
 EOD
 $pareto << EOD
-2129 0.0384306 0.0150514 "default"
+2046 0.0347579 0.0150514 "default"
 EOD
 $paretoIndirect << EOD
-2129 0.0384306 0.0150514 "default"
+2046 0.0347579 0.0150514 "default"
 EOD
 $default << EOD
-2129 0.0384306 0.0150514 "default"
+2046 0.0347579 0.0150514 "default"
 EOD
 set xtics ("1" 1, "2" 2, "5" 5, "10" 10, "20" 20, "50" 50, "100" 100, "200" 200, "500" 500, "1000" 1000, "2000" 2000, "5000" 5000, "10000" 10000, "20000" 20000, "50000" 50000, "100000" 100000, "200000" 200000, "500000" 500000)
 noise = 0.00560349
@@ -53,8 +53,8 @@ unset logscale y
 set ytics auto
 set format y '%g'
 set xtics ("100" 100, "200" 200, "500" 500, "1000" 1000, "2000" 2000, "5000" 5000, "10000" 10000, "20000" 20000, "50000" 50000, "100000" 100000, "200000" 200000, "500000" 500000)
-set xrange [1637.79:3832.42]
-set yrange [0.0382769:0.0385844]
+set xrange [1573.81:3682.71]
+set yrange [0.0346188:0.0348969]
 set key top left box opaque font ',9'
 set ylabel 'RMSE of the full image vs reference (linear)'
 set title 'vct points only (zoom; full image)'

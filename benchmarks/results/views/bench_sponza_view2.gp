@@ -2,22 +2,22 @@
 set terminal pngcairo size 2100,700 enhanced font 'DejaVu Sans,10'
 set output "bench_sponza_view2.png"
 $engine << EOD
-2343 0.0216286 0.00815277 "default"
+2085 0.0183263 0.00815277 "default"
 EOD
 $pathtracer << EOD
-43.21 0.0719601 0.0512963 "1"
-172.6 0.0381151 0.0261145 "4"
-685.5 0.019233 0.0129197 "16"
-2813 0.0102073 0.00682889 "64"
+40.55 0.0719601 0.0512963 "1"
+156.5 0.0381151 0.0261145 "4"
+621.9 0.019233 0.0129197 "16"
+2496 0.0102073 0.00682889 "64"
 EOD
 $pareto << EOD
-2343 0.0216286 0.00815277 "default"
+2085 0.0183263 0.00815277 "default"
 EOD
 $paretoIndirect << EOD
-2343 0.0216286 0.00815277 "default"
+2085 0.0183263 0.00815277 "default"
 EOD
 $default << EOD
-2343 0.0216286 0.00815277 "default"
+2085 0.0183263 0.00815277 "default"
 EOD
 set xtics ("1" 1, "2" 2, "5" 5, "10" 10, "20" 20, "50" 50, "100" 100, "200" 200, "500" 500, "1000" 1000, "2000" 2000, "5000" 5000, "10000" 10000, "20000" 20000, "50000" 50000, "100000" 100000, "200000" 200000, "500000" 500000)
 noise = 0.00340422
@@ -53,8 +53,8 @@ unset logscale y
 set ytics auto
 set format y '%g'
 set xtics ("100" 100, "200" 200, "500" 500, "1000" 1000, "2000" 2000, "5000" 5000, "10000" 10000, "20000" 20000, "50000" 50000, "100000" 100000, "200000" 200000, "500000" 500000)
-set xrange [1801.95:4216.57]
-set yrange [0.0215421:0.0217152]
+set xrange [1604.1:3753.6]
+set yrange [0.018253:0.0183996]
 set key top left box opaque font ',9'
 set ylabel 'RMSE of the full image vs reference (linear)'
 set title 'vct points only (zoom; full image)'

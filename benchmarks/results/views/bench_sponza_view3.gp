@@ -2,22 +2,22 @@
 set terminal pngcairo size 2100,700 enhanced font 'DejaVu Sans,10'
 set output "bench_sponza_view3.png"
 $engine << EOD
-2103 0.0135744 0.00674427 "default"
+2096 0.0139041 0.00674427 "default"
 EOD
 $pathtracer << EOD
-37.12 0.0383587 0.0356284 "1"
-142.6 0.0198962 0.0179391 "4"
-564.4 0.0103836 0.0092246 "16"
-2260 0.00549825 0.00488115 "64"
+36.76 0.0383587 0.0356284 "1"
+138.8 0.0198962 0.0179391 "4"
+539 0.0103836 0.0092246 "16"
+2153 0.00549825 0.00488115 "64"
 EOD
 $pareto << EOD
-2103 0.0135744 0.00674427 "default"
+2096 0.0139041 0.00674427 "default"
 EOD
 $paretoIndirect << EOD
-2103 0.0135744 0.00674427 "default"
+2096 0.0139041 0.00674427 "default"
 EOD
 $default << EOD
-2103 0.0135744 0.00674427 "default"
+2096 0.0139041 0.00674427 "default"
 EOD
 set xtics ("1" 1, "2" 2, "5" 5, "10" 10, "20" 20, "50" 50, "100" 100, "200" 200, "500" 500, "1000" 1000, "2000" 2000, "5000" 5000, "10000" 10000, "20000" 20000, "50000" 50000, "100000" 100000, "200000" 200000, "500000" 500000)
 noise = 0.00180299
@@ -53,8 +53,8 @@ unset logscale y
 set ytics auto
 set format y '%g'
 set xtics ("100" 100, "200" 200, "500" 500, "1000" 1000, "2000" 2000, "5000" 5000, "10000" 10000, "20000" 20000, "50000" 50000, "100000" 100000, "200000" 200000, "500000" 500000)
-set xrange [1617.47:3784.87]
-set yrange [0.0135201:0.0136287]
+set xrange [1612.01:3772.11]
+set yrange [0.0138485:0.0139598]
 set key top left box opaque font ',9'
 set ylabel 'RMSE of the full image vs reference (linear)'
 set title 'vct points only (zoom; full image)'

@@ -2,22 +2,22 @@
 set terminal pngcairo size 2100,700 enhanced font 'DejaVu Sans,10'
 set output "bench_sponza_view4.png"
 $engine << EOD
-2004 0.0152348 0.00423496 "default"
+2010 0.0109776 0.00423496 "default"
 EOD
 $pathtracer << EOD
-33.69 0.0156924 0.0107312 "1"
-129.8 0.0100968 0.00627176 "4"
-532.5 0.00539772 0.00325767 "16"
-2150 0.0027537 0.00179811 "64"
+34.94 0.0156924 0.0107312 "1"
+134.9 0.0100968 0.00627176 "4"
+529.2 0.00539772 0.00325767 "16"
+2079 0.0027537 0.00179811 "64"
 EOD
 $pareto << EOD
-2004 0.0152348 0.00423496 "default"
+2010 0.0109776 0.00423496 "default"
 EOD
 $paretoIndirect << EOD
-2004 0.0152348 0.00423496 "default"
+2010 0.0109776 0.00423496 "default"
 EOD
 $default << EOD
-2004 0.0152348 0.00423496 "default"
+2010 0.0109776 0.00423496 "default"
 EOD
 set xtics ("1" 1, "2" 2, "5" 5, "10" 10, "20" 20, "50" 50, "100" 100, "200" 200, "500" 500, "1000" 1000, "2000" 2000, "5000" 5000, "10000" 10000, "20000" 20000, "50000" 50000, "100000" 100000, "200000" 200000, "500000" 500000)
 noise = 0.000941668
@@ -53,8 +53,8 @@ unset logscale y
 set ytics auto
 set format y '%g'
 set xtics ("100" 100, "200" 200, "500" 500, "1000" 1000, "2000" 2000, "5000" 5000, "10000" 10000, "20000" 20000, "50000" 50000, "100000" 100000, "200000" 200000, "500000" 500000)
-set xrange [1541.33:3606.7]
-set yrange [0.0151739:0.0152958]
+set xrange [1546.53:3618.88]
+set yrange [0.0109337:0.0110215]
 set key top left box opaque font ',9'
 set ylabel 'RMSE of the full image vs reference (linear)'
 set title 'vct points only (zoom; full image)'
