@@ -231,6 +231,41 @@ TEST(DirectLighting, OneSampleOfAShadowEdgeShowsTheLitShareOfItsPixel) {
     EXPECT_LT(error, 0.1);
 }
 
+// A curtain with smooth normals, seen at a grazing angle on its dark side: the sun and the floor
+// it lights are behind it, nothing is in front. Its vertex normals lean 60° from its plane's normal
+// (away from the camera), so from the camera they point away even though the face the camera
+// sees is the front. Turned to face the camera by itself, the normal would point into the
+// curtain: the cones would start behind it, in the sunlit half (101 % of the lit floor's
+// radiance). Turned to the side the triangle shows the camera, it stays dark but for the ring
+// cones that lean behind the curtain's plane and reach around its edge, 1 m away (6 %): the
+// path tracer gives directions behind the triangle nothing, a cone cannot tell them apart.
+TEST(DirectLighting, ASmoothCurtainSeenGrazingStaysDarkOnItsUnlitSide) {
+    const auto dir = test::testDir();
+    std::ofstream(dir / "curtain.mtl") << "newmtl white\nKd 0.6 0.6 0.6\n";
+    std::ofstream obj(dir / "curtain.obj");
+    obj << "mtllib curtain.mtl\nusemtl white\n"
+           // the floor behind the curtain (z < 0), facing up
+           "v -3 0 -3\nv 3 0 -3\nv 3 0 0\nv -3 0 0\n"
+           // the curtain at z = 0, its front (+z) towards the camera
+           "v -1 0 0\nv 1 0 0\nv 1 2 0\nv -1 2 0\n"
+           "vn 0 1 0\nvn 0.866 0 0.5\n"
+           "f 4//1 3//1 2//1\nf 4//1 2//1 1//1\n"
+           "f 5//2 6//2 7//2\nf 5//2 7//2 8//2\n";
+    obj.close();
+    const auto out = dir / "out";
+    const auto result = test::runVct("render -q --scene " + (dir / "curtain.obj").string() +
+                                     " --eye -3,1,1 --target 0,1,0 --fov 40 --width 96 --height 72 --voxel-levels 6"
+                                     " --sun-dir 0,-0.6,0.8 --sun-irradiance 3 --hdr-out " + out.string() +
+                                     ".pfm --out " + out.string() + ".png");
+    ASSERT_EQ(result.exitCode, 0) << result.output;
+    const ImageF image = readHdrImage(out.string() + ".pfm");
+    const double litFloor = 0.6 / glm::pi<double>() * 3.0 * 0.6;
+    const double curtain = windowMean(image, 48, 36, 2, 0);
+    std::printf("[ normals  ] grazing view of a smooth curtain's unlit side: %.4f, %.2f %% of the sunlit floor\n",
+                curtain, 100.0 * curtain / litFloor);
+    EXPECT_LT(curtain, 0.1 * litFloor);
+}
+
 // A wall lit at 15° from its plane under a ledge that sticks out 0.4 m at 2 m: the ledge shadows
 // the wall down to y = 2 − 0.4·cot 15° = 0.507 m. Moving a shadow lookup off the wall by a texel
 // (the usual normal offset against acne) lets it see past the ledge and lifts that edge by

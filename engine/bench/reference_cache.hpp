@@ -20,7 +20,7 @@
 
 namespace vct::bench {
 
-inline constexpr int kReferenceCacheVersion = 1;
+inline constexpr int kReferenceCacheVersion = 2;
 
 struct ReferenceImages {
     ImageF full;      // radiance, `bounces` indirect bounces

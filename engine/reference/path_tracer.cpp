@@ -9,6 +9,10 @@ namespace {
 
 glm::vec3 facing(glm::vec3 n, glm::vec3 rayDirection) { return glm::dot(n, rayDirection) > 0.0f ? -n : n; }
 
+// The shading normal on the side of the triangle the ray arrived at (`geometric`, already turned
+// to face the ray).
+glm::vec3 onSideOf(glm::vec3 shading, glm::vec3 geometric) { return glm::dot(shading, geometric) < 0.0f ? -shading : shading; }
+
 }  // namespace
 
 RadianceSample PathTracer::trace(const Ray& cameraRay, Pcg32& rng) const {
@@ -17,8 +21,8 @@ RadianceSample PathTracer::trace(const Ray& cameraRay, Pcg32& rng) const {
     if (!hit) return result;
     result.hit = true;
 
-    glm::vec3 normal = facing(hit->shadingNormal, cameraRay.direction);
     glm::vec3 geometric = facing(hit->geometricNormal, cameraRay.direction);
+    glm::vec3 normal = onSideOf(hit->shadingNormal, geometric);
     glm::vec3 albedo = materials_.albedo(hit->material, hit->uv, hit->uv1, hit->color);
     result.direct = glm::dvec3(materials_.emission(hit->material));
     if (!lights_.empty()) result.direct += lights_.reflected(rays_, *hit, normal, geometric, albedo);
@@ -41,8 +45,8 @@ RadianceSample PathTracer::trace(const Ray& cameraRay, Pcg32& rng) const {
         if (glm::dot(direction, geometric) <= 0.0f) break;
         hit = rays_.intersect(hit->spawnPoint(direction), direction);
         if (!hit) break;  // left the scene: the sky is black
-        normal = facing(hit->shadingNormal, direction);
         geometric = facing(hit->geometricNormal, direction);
+        normal = onSideOf(hit->shadingNormal, geometric);
         albedo = materials_.albedo(hit->material, hit->uv, hit->uv1, hit->color);
         glm::dvec3 radiance(materials_.emission(hit->material));
         if (!lights_.empty()) radiance += lights_.reflected(rays_, *hit, normal, geometric, albedo);

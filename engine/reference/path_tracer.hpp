@@ -19,11 +19,14 @@
 // ones the engine is compared on, carry no roulette noise): survival probability
 // q = min(0.95, max component of the throughput), throughput /= q.
 //
-// Shading normal = interpolated vertex normal turned to face the incoming ray, as in the
-// engine's G-buffer (shaders/material.glsl facingNormal); it gives cosθ and the sampling frame.
-// The triangle's geometric normal (also turned to the incoming ray) decides which side light may
-// come from and leave to: light behind the triangle and bounce directions into it count 0, so
-// interpolated normals that tilt past a wall (smoothed box corners) cannot leak light through it.
+// The triangle's geometric normal, turned to face the incoming ray, gives the side the ray
+// arrived at; the shading normal is the interpolated vertex normal turned to that side, as in the
+// engine's G-buffer (shaders/material.glsl facingNormal), and gives cosθ and the sampling frame.
+// (Turned to face the ray by itself, a smooth normal tilted past edge-on would point into the
+// surface and darken a curtain's folds seen at a grazing angle.) The geometric normal decides
+// which side light may come from and leave to: light behind the triangle and bounce directions
+// into it count 0, so interpolated normals that tilt past a wall (smoothed box corners) cannot
+// leak light through it.
 #include <glm/glm.hpp>
 
 #include "reference/camera_rays.hpp"
