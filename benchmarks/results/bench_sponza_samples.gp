@@ -2,31 +2,31 @@
 set terminal pngcairo size 2100,700 enhanced font 'DejaVu Sans,10'
 set output "bench_sponza_samples.png"
 $engine << EOD
-2118 0.0345464 0.0139835 "default"
-2701 0.0243365 0.0126566 "samples=4"
-4975 0.0164558 0.0123009 "samples=16"
+2146 0.0344172 0.0140595 "default"
+2774 0.0243175 0.0127123 "samples=4"
+5004 0.0164003 0.0123879 "samples=16"
 EOD
 $pathtracer << EOD
-48.3 0.100835 0.0784821 "1"
-190.2 0.0538767 0.0398237 "4"
-769.5 0.0270293 0.0199341 "16"
-3097 0.0138297 0.0101892 "64"
+40.23 0.100813 0.078527 "1"
+162.5 0.0538738 0.0398726 "4"
+621.8 0.0270134 0.0199552 "16"
+2516 0.0138254 0.0102089 "64"
 EOD
 $pareto << EOD
-2118 0.0345464 0.0139835 "default"
-2701 0.0243365 0.0126566 "samples=4"
-4975 0.0164558 0.0123009 "samples=16"
+2146 0.0344172 0.0140595 "default"
+2774 0.0243175 0.0127123 "samples=4"
+5004 0.0164003 0.0123879 "samples=16"
 EOD
 $paretoIndirect << EOD
-2118 0.0345464 0.0139835 "default"
-2701 0.0243365 0.0126566 "samples=4"
-4975 0.0164558 0.0123009 "samples=16"
+2146 0.0344172 0.0140595 "default"
+2774 0.0243175 0.0127123 "samples=4"
+5004 0.0164003 0.0123879 "samples=16"
 EOD
 $default << EOD
-2118 0.0345464 0.0139835 "default"
+2146 0.0344172 0.0140595 "default"
 EOD
 set xtics ("1" 1, "2" 2, "5" 5, "10" 10, "20" 20, "50" 50, "100" 100, "200" 200, "500" 500, "1000" 1000, "2000" 2000, "5000" 5000, "10000" 10000, "20000" 20000, "50000" 50000, "100000" 100000, "200000" 200000, "500000" 500000)
-noise = 0.00336886
+noise = 0.00337035
 set multiplot layout 1,3 title "sponza 320x180: error against time, vct settings and the path tracer (1 bounce, reference 1024 spp), llvmpipe (LLVM 15.0.6, 256 bits), 2026-11-24" font ',12'
 set logscale xy
 set grid xtics ytics mxtics mytics lc rgb '#e0e0e0'
@@ -59,8 +59,8 @@ unset logscale y
 set ytics auto
 set format y '%g'
 set xtics ("100" 100, "200" 200, "500" 500, "1000" 1000, "2000" 2000, "5000" 5000, "10000" 10000, "20000" 20000, "50000" 50000, "100000" 100000, "200000" 200000, "500000" 500000)
-set xrange [1629.34:8954.89]
-set yrange [0.0150086:0.0359937]
+set xrange [1651.1:9006.92]
+set yrange [0.0149589:0.0358585]
 set key top left box opaque font ',9'
 set ylabel 'RMSE of the full image vs reference (linear)'
 set title 'vct points only (zoom; full image)'

@@ -2,32 +2,32 @@
 set terminal pngcairo size 2100,700 enhanced font 'DejaVu Sans,10'
 set output "bench_readme_sponza.png"
 $engine << EOD
-236.4 0.0444523 0.0315058 "GI off"
-2112 0.0345464 0.0139835 "default"
+232.5 0.0444857 0.0316567 "GI off"
+2198 0.0344172 0.0140595 "default"
 EOD
 $pathtracer << EOD
-42.64 0.100835 0.0784821 "1"
-83.32 0.0739538 0.0558578 "2"
-170.1 0.0538767 0.0398237 "4"
-341.4 0.0381771 0.0281439 "8"
-679.1 0.0270293 0.0199341 "16"
-1354 0.0192244 0.0143022 "32"
-2706 0.0138297 0.0101892 "64"
-5469 0.0101798 0.00746945 "128"
+45.69 0.100813 0.078527 "1"
+87.64 0.07398 0.0559022 "2"
+175.2 0.0538738 0.0398726 "4"
+347.1 0.0381414 0.0281776 "8"
+693.8 0.0270134 0.0199552 "16"
+1409 0.0192044 0.0143156 "32"
+2771 0.0138254 0.0102089 "64"
+5625 0.0101568 0.00748851 "128"
 EOD
 $pareto << EOD
-236.4 0.0444523 0.0315058 "GI off"
-2112 0.0345464 0.0139835 "default"
+232.5 0.0444857 0.0316567 "GI off"
+2198 0.0344172 0.0140595 "default"
 EOD
 $paretoIndirect << EOD
-236.4 0.0444523 0.0315058 "GI off"
-2112 0.0345464 0.0139835 "default"
+232.5 0.0444857 0.0316567 "GI off"
+2198 0.0344172 0.0140595 "default"
 EOD
 $default << EOD
-2112 0.0345464 0.0139835 "default"
+2198 0.0344172 0.0140595 "default"
 EOD
 set xtics ("1" 1, "2" 2, "5" 5, "10" 10, "20" 20, "50" 50, "100" 100, "200" 200, "500" 500, "1000" 1000, "2000" 2000, "5000" 5000, "10000" 10000, "20000" 20000, "50000" 50000, "100000" 100000, "200000" 200000, "500000" 500000)
-noise = 0.00336886
+noise = 0.00337035
 set multiplot layout 1,3 title "sponza 320x180: error against time, vct settings and the path tracer (1 bounce, reference 1024 spp), llvmpipe (LLVM 15.0.6, 256 bits), 2026-11-24" font ',12'
 set logscale xy
 set grid xtics ytics mxtics mytics lc rgb '#e0e0e0'
@@ -60,8 +60,8 @@ unset logscale y
 set ytics auto
 set format y '%g'
 set xtics ("10" 10, "20" 20, "50" 50, "100" 100, "200" 200, "500" 500, "1000" 1000, "2000" 2000, "5000" 5000, "10000" 10000, "20000" 20000, "50000" 50000, "100000" 100000, "200000" 200000, "500000" 500000)
-set xrange [181.857:3801.15]
-set yrange [0.033754:0.0452447]
+set xrange [178.857:3957.23]
+set yrange [0.0336117:0.0452912]
 set key top left box opaque font ',9'
 set ylabel 'RMSE of the full image vs reference (linear)'
 set title 'vct points only (zoom; full image)'

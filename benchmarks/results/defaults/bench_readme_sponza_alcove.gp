@@ -2,32 +2,32 @@
 set terminal pngcairo size 2100,700 enhanced font 'DejaVu Sans,10'
 set output "bench_readme_sponza_alcove.png"
 $engine << EOD
-242.4 0.0155205 0.00718056 "GI off"
-2199 0.0150479 0.00549921 "default"
+212.7 0.0155152 0.00718342 "GI off"
+1989 0.0149952 0.00529748 "default"
 EOD
 $pathtracer << EOD
-38.56 0.0304418 0.0246546 "1"
-76.72 0.0232229 0.0182291 "2"
-151 0.0161857 0.0125512 "4"
-293.4 0.0118078 0.00868531 "8"
-594 0.00837531 0.00635142 "16"
-1185 0.00564766 0.00448059 "32"
-2383 0.00418629 0.0031797 "64"
-4697 0.00309463 0.00231897 "128"
+38.03 0.0304382 0.0246553 "1"
+75.06 0.0232197 0.0182311 "2"
+150.5 0.0161894 0.0125611 "4"
+297.7 0.0118156 0.0087004 "8"
+607.8 0.00837981 0.0063605 "16"
+1187 0.00565385 0.00448905 "32"
+2408 0.00419137 0.00318578 "64"
+4371 0.00309643 0.00232286 "128"
 EOD
 $pareto << EOD
-242.4 0.0155205 0.00718056 "GI off"
-2199 0.0150479 0.00549921 "default"
+212.7 0.0155152 0.00718342 "GI off"
+1989 0.0149952 0.00529748 "default"
 EOD
 $paretoIndirect << EOD
-242.4 0.0155205 0.00718056 "GI off"
-2199 0.0150479 0.00549921 "default"
+212.7 0.0155152 0.00718342 "GI off"
+1989 0.0149952 0.00529748 "default"
 EOD
 $default << EOD
-2199 0.0150479 0.00549921 "default"
+1989 0.0149952 0.00529748 "default"
 EOD
 set xtics ("1" 1, "2" 2, "5" 5, "10" 10, "20" 20, "50" 50, "100" 100, "200" 200, "500" 500, "1000" 1000, "2000" 2000, "5000" 5000, "10000" 10000, "20000" 20000, "50000" 50000, "100000" 100000, "200000" 200000, "500000" 500000)
-noise = 0.00104799
+noise = 0.0010487
 set multiplot layout 1,3 title "sponza 320x180: error against time, vct settings and the path tracer (1 bounce, reference 1024 spp), llvmpipe (LLVM 15.0.6, 256 bits), 2026-11-24" font ',12'
 set logscale xy
 set grid xtics ytics mxtics mytics lc rgb '#e0e0e0'
@@ -60,8 +60,8 @@ unset logscale y
 set ytics auto
 set format y '%g'
 set xtics ("10" 10, "20" 20, "50" 50, "100" 100, "200" 200, "500" 500, "1000" 1000, "2000" 2000, "5000" 5000, "10000" 10000, "20000" 20000, "50000" 50000, "100000" 100000, "200000" 200000, "500000" 500000)
-set xrange [186.463:3957.77]
-set yrange [0.0149858:0.0155826]
+set xrange [163.582:3579.72]
+set yrange [0.0149331:0.0155772]
 set key top left box opaque font ',9'
 set ylabel 'RMSE of the full image vs reference (linear)'
 set title 'vct points only (zoom; full image)'

@@ -2,32 +2,32 @@
 set terminal pngcairo size 2100,700 enhanced font 'DejaVu Sans,10'
 set output "bench_readme_sponza_alternate.png"
 $engine << EOD
-229.3 0.0397195 0.0330686 "GI off"
-2211 0.0271658 0.0157448 "default"
+220.9 0.0397508 0.0331504 "GI off"
+2077 0.0270787 0.0157691 "default"
 EOD
 $pathtracer << EOD
-46.85 0.105181 0.0779611 "1"
-94.89 0.0759862 0.055088 "2"
-184.3 0.0543185 0.0386856 "4"
-379.4 0.0391672 0.0275592 "8"
-779 0.0278523 0.0195532 "16"
-1750 0.0197627 0.0140643 "32"
-3030 0.0142802 0.0101104 "64"
-6019 0.0104036 0.00737476 "128"
+43.74 0.10519 0.078003 "1"
+88.1 0.0759991 0.0551047 "2"
+169.2 0.0543785 0.0387149 "4"
+338.9 0.0391751 0.0275751 "8"
+688.1 0.0278626 0.0195666 "16"
+1392 0.0197724 0.0140758 "32"
+2851 0.0142997 0.0101254 "64"
+5662 0.0104086 0.00738225 "128"
 EOD
 $pareto << EOD
-229.3 0.0397195 0.0330686 "GI off"
-2211 0.0271658 0.0157448 "default"
+220.9 0.0397508 0.0331504 "GI off"
+2077 0.0270787 0.0157691 "default"
 EOD
 $paretoIndirect << EOD
-229.3 0.0397195 0.0330686 "GI off"
-2211 0.0271658 0.0157448 "default"
+220.9 0.0397508 0.0331504 "GI off"
+2077 0.0270787 0.0157691 "default"
 EOD
 $default << EOD
-2211 0.0271658 0.0157448 "default"
+2077 0.0270787 0.0157691 "default"
 EOD
 set xtics ("1" 1, "2" 2, "5" 5, "10" 10, "20" 20, "50" 50, "100" 100, "200" 200, "500" 500, "1000" 1000, "2000" 2000, "5000" 5000, "10000" 10000, "20000" 20000, "50000" 50000, "100000" 100000, "200000" 200000, "500000" 500000)
-noise = 0.00346966
+noise = 0.00347134
 set multiplot layout 1,3 title "sponza 320x180: error against time, vct settings and the path tracer (1 bounce, reference 1024 spp), llvmpipe (LLVM 15.0.6, 256 bits), 2026-11-24" font ',12'
 set logscale xy
 set grid xtics ytics mxtics mytics lc rgb '#e0e0e0'
@@ -60,8 +60,8 @@ unset logscale y
 set ytics auto
 set format y '%g'
 set xtics ("10" 10, "20" 20, "50" 50, "100" 100, "200" 200, "500" 500, "1000" 1000, "2000" 2000, "5000" 5000, "10000" 10000, "20000" 20000, "50000" 50000, "100000" 100000, "200000" 200000, "500000" 500000)
-set xrange [176.379:3979.28]
-set yrange [0.0261615:0.0407238]
+set xrange [169.942:3738.59]
+set yrange [0.0260649:0.0407646]
 set key top left box opaque font ',9'
 set ylabel 'RMSE of the full image vs reference (linear)'
 set title 'vct points only (zoom; full image)'

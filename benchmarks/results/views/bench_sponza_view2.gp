@@ -2,25 +2,25 @@
 set terminal pngcairo size 2100,700 enhanced font 'DejaVu Sans,10'
 set output "bench_sponza_view2.png"
 $engine << EOD
-2085 0.0183263 0.00815277 "default"
+2063 0.0183798 0.00814999 "default"
 EOD
 $pathtracer << EOD
-40.55 0.0719601 0.0512963 "1"
-156.5 0.0381151 0.0261145 "4"
-621.9 0.019233 0.0129197 "16"
-2496 0.0102073 0.00682889 "64"
+41.02 0.0720015 0.0513106 "1"
+158.6 0.0381396 0.0261231 "4"
+659.3 0.0192438 0.0129216 "16"
+2597 0.0102165 0.00683016 "64"
 EOD
 $pareto << EOD
-2085 0.0183263 0.00815277 "default"
+2063 0.0183798 0.00814999 "default"
 EOD
 $paretoIndirect << EOD
-2085 0.0183263 0.00815277 "default"
+2063 0.0183798 0.00814999 "default"
 EOD
 $default << EOD
-2085 0.0183263 0.00815277 "default"
+2063 0.0183798 0.00814999 "default"
 EOD
 set xtics ("1" 1, "2" 2, "5" 5, "10" 10, "20" 20, "50" 50, "100" 100, "200" 200, "500" 500, "1000" 1000, "2000" 2000, "5000" 5000, "10000" 10000, "20000" 20000, "50000" 50000, "100000" 100000, "200000" 200000, "500000" 500000)
-noise = 0.00340422
+noise = 0.00340675
 set multiplot layout 1,3 title "sponza 320x180: error against time, vct settings and the path tracer (1 bounce, reference 512 spp), llvmpipe (LLVM 15.0.6, 256 bits), 2026-11-24" font ',12'
 set logscale xy
 set grid xtics ytics mxtics mytics lc rgb '#e0e0e0'
@@ -53,8 +53,8 @@ unset logscale y
 set ytics auto
 set format y '%g'
 set xtics ("100" 100, "200" 200, "500" 500, "1000" 1000, "2000" 2000, "5000" 5000, "10000" 10000, "20000" 20000, "50000" 50000, "100000" 100000, "200000" 200000, "500000" 500000)
-set xrange [1604.1:3753.6]
-set yrange [0.018253:0.0183996]
+set xrange [1586.65:3712.77]
+set yrange [0.0183063:0.0184533]
 set key top left box opaque font ',9'
 set ylabel 'RMSE of the full image vs reference (linear)'
 set title 'vct points only (zoom; full image)'
