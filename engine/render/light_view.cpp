@@ -66,6 +66,10 @@ LightViewPrograms lightViewPrograms() {
 
 int lightViewCount(const Light& light) { return light.type == LightType::Point ? kCubeFaces : 1; }
 
+int shadowMapResolution(const Light& light, int requested) {
+    return light.type == LightType::Point ? std::max(16, requested / 2) : requested;
+}
+
 double LightViewMap::maxTexelFlux(const Light& light, const LightViewTransform& transform) {
     return lightQuantity(light) * std::max({light.color.x, light.color.y, light.color.z}) * transform.texelFootprint;
 }

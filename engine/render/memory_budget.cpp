@@ -70,14 +70,17 @@ MemoryEstimate estimate(const Scene& scene, const MemoryRequest& r) {
     e.imageTargets = std::size_t(r.width) * std::size_t(r.height) * (52 + 16 + 16 + 5 + 36 + 16);
     // Depth 4, position 16, normal 8, flux 16 bytes per texel, one map per light, and a finer
     // shadow map (depth, 4 bytes per texel) beside each.
-    std::size_t maps = 0;  // a point light has six (a cube), the others one
-    for (const Light& light : scene.lights) maps += std::size_t(lightViewCount(light));
-    const std::size_t shadowTexels = r.shadowMapResolution > r.lightViewResolution
-                                         ? std::size_t(r.shadowMapResolution) * std::size_t(r.shadowMapResolution)
-                                         : 0;
-    e.lightViewMaps = (std::size_t(r.lightViewResolution) * std::size_t(r.lightViewResolution) * 44 +
-                       shadowTexels * 4) *
-                      std::max<std::size_t>(maps, 1);
+    // A point light has six maps (a cube), the others one; its faces' shadow maps are coarser.
+    const auto mapBytes = [&](int shadowResolution) {
+        const std::size_t shadowTexels = shadowResolution > r.lightViewResolution
+                                             ? std::size_t(shadowResolution) * std::size_t(shadowResolution)
+                                             : 0;
+        return std::size_t(r.lightViewResolution) * std::size_t(r.lightViewResolution) * 44 + shadowTexels * 4;
+    };
+    e.lightViewMaps = 0;
+    for (const Light& light : scene.lights)
+        e.lightViewMaps += mapBytes(shadowMapResolution(light, r.shadowMapResolution)) * std::size_t(lightViewCount(light));
+    if (scene.lights.empty()) e.lightViewMaps = mapBytes(r.shadowMapResolution);
     e.sceneData = scene.vertices.size() * sizeof(Vertex) + scene.indices.size() * 4 + scene.materials.size() * 32;
     for (const Texture& t : scene.textures) e.sceneData += std::size_t(t.width) * std::size_t(t.height) * 4 * 4 / 3;
     if (r.octree) e.voxels = estimateVoxelBytes(scene, r.voxelLevels, r.radiance, r.bounces);
