@@ -113,6 +113,30 @@ TEST(StressResources, EstimateIsAConservativeBoundOfThePoolsUsed) {
     }
 }
 
+// A point light's six cube faces get shadow maps of half the side (render/light_view.hpp): the
+// pools hold exactly what the estimate counts: a quarter of the depth texels of full-size faces.
+TEST(StressResources, APointLightsCubeFacesHoldHalfSizeShadowMaps) {
+    Scene scene = makeCornellBox();
+    Light point;
+    point.type = LightType::Point;
+    point.position = {0.0, 1.5, 0.0};
+    point.intensity = 3.0;
+    scene.lights = {point};
+    auto context = gl::createContext(gl::defaultBackend());
+    RenderSettings settings = smallSettings(96, 72, 5, 256);
+    settings.shadowMapResolution = 1024;
+    Renderer renderer(scene, settings);
+    renderer.renderFrame(scene.cameras[0]);
+    std::size_t maps = 0;
+    for (const MemoryPool& pool : renderer.memory())
+        if (pool.name == "light-view maps") maps = pool.bytes;
+    const std::size_t photons = 256 * 256 * 44, halfShadow = 512 * 512 * 4;
+    EXPECT_EQ(maps, 6 * (photons + halfShadow));
+    const MemoryEstimate e =
+        estimateGpuMemory(scene, MemoryRequest{96, 72, 256, 5, true, true, false, settings.shadowMapResolution});
+    EXPECT_EQ(e.lightViewMaps, maps);
+}
+
 TEST(StressResources, RequestsBeyondGlLimitsFailWithTheLimit) {
     const auto dir = testDir();
     const std::string out = " --out " + (dir / "x.png").string();
