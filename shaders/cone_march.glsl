@@ -260,18 +260,33 @@ vec4 traceCone(vec3 origin, vec3 normal, vec3 direction, float tanHalfAngle) {
 }
 
 
+// The share of a cone (axis `direction`, half-angle atan(tanHalfAngle)) in front of the plane
+// of unit normal `n`: from its axis' elevation above the plane, linear across the cone's width.
+float coneShareAbove(vec3 direction, float tanHalfAngle, vec3 n) {
+    float elevation = asin(clamp(dot(direction, n), -1.0, 1.0));
+    return clamp(0.5 + 0.5 * elevation / atan(tanHalfAngle), 0.0, 1.0);
+}
+
 // The cone set around `normal` from `origin` (voxel space): irradiance E (rgb) and the occlusion
-// Σ weight·opacity (a; π when every cone is blocked).
-vec4 gatherIrradiance(vec3 origin, vec3 normal) {
+// Σ weight·opacity (a; π when every cone is blocked). `surfaceNormal` is the surface's own side
+// (a triangle's geometric normal; `normal` itself where there is none): light cannot arrive from
+// behind it, so where smooth shading leans `normal` away from it, each cone counts only the share
+// it has in front of that plane beyond the share it has in front of its own (which the cone set's
+// weights already account for: on a flat surface every cone keeps its whole weight).
+vec4 gatherIrradiance(vec3 origin, vec3 normal, vec3 surfaceNormal) {
     vec3 tangent, bitangent;
     orthonormalBasis(normal, tangent, bitangent);
     vec4 gathered = vec4(0.0);
     for (int c = 0; c < uConeCount; ++c) {
         vec3 d = uConeDirection[c];
         vec3 direction = normalize(d.x * tangent + d.y * bitangent + d.z * normal);
+        float tanHalfAngle = uConeTanHalfAngle[c];
+        float inFront = min(coneShareAbove(direction, tanHalfAngle, surfaceNormal) /
+                                max(coneShareAbove(direction, tanHalfAngle, normal), 1e-3), 1.0);
+        if (inFront <= 0.0) continue;
         coneAxis = direction;
-        coneSpread(direction, uConeTanHalfAngle[c], coneAlongPlus, coneAlongMinus);
-        gathered += uConeWeight[c] * traceCone(origin, normal, direction, uConeTanHalfAngle[c]);
+        coneSpread(direction, tanHalfAngle, coneAlongPlus, coneAlongMinus);
+        gathered += uConeWeight[c] * inFront * traceCone(origin, normal, direction, tanHalfAngle);
     }
     return gathered;
 }

@@ -47,6 +47,6 @@ void main() {
             count64(CONE_COUNTER_SKY_PIXELS, 1u);
         return;
     }
-    imageStore(uIndirect, cell, tracePixel(position.xyz, normalize(texelFetch(uNormal, pixel, 0).xyz)));
+    imageStore(uIndirect, cell, tracePixel(pixel, position.xyz, normalize(texelFetch(uNormal, pixel, 0).xyz)));
     if (uDownscale > 1) imageStore(uTracedPixel, cell, uvec4(packTracedPixel(pixel)));
 }

@@ -17,12 +17,15 @@ void count64(uint index, uint value) {
     if (old + value < old) atomicAdd(coneCounters[index + 1u], 1u);
 }
 
-// The cone set traced from a surface point (scene-local position, unit normal facing the camera):
-// indirect irradiance E (rgb) and ambient visibility (a: 1 = nothing in the way), counted as one
-// traced pixel with its samples.
-vec4 tracePixel(vec3 position, vec3 normal) {
+layout(binding = TEXTURE_GBUFFER_GEOMETRIC_NORMAL) uniform sampler2D uGeometricNormal;
+
+// The cone set traced from the surface point of `pixel` (scene-local position, unit normal facing
+// the camera): indirect irradiance E (rgb) and ambient visibility (a: 1 = nothing in the way),
+// counted as one traced pixel with its samples. No light arrives from behind the pixel's triangle
+// (gatherIrradiance), however far smooth shading leans the normal from it.
+vec4 tracePixel(ivec2 pixel, vec3 position, vec3 normal) {
     const vec3 origin = (position - uVoxelOrigin) * uVoxelScale + normal * uConeOffset;
-    const vec4 gathered = gatherIrradiance(origin, normal);
+    const vec4 gathered = gatherIrradiance(origin, normal, texelFetch(uGeometricNormal, pixel, 0).xyz);
     count64(CONE_COUNTER_SAMPLES, samplesTaken);
     count64(CONE_COUNTER_SAMPLES_SAVED, samplesSaved);
     count64(CONE_COUNTER_TRACED_PIXELS, 1u);

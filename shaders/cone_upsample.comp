@@ -55,5 +55,5 @@ void main() {
         imageStore(uIndirect, pixel, sum / weightSum);
         return;
     }
-    imageStore(uIndirect, pixel, tracePixel(position.xyz, normal));
+    imageStore(uIndirect, pixel, tracePixel(pixel, position.xyz, normal));
 }

@@ -33,6 +33,6 @@ void main() {
         flux *= angularWeight(uLight, -toLight) * cosAxis * cosAxis * cosAxis;
     }
     outPosition = vec4(vPosition, 1.0);
-    outNormal = vec4(facingNormal(vNormal, vPosition, toLight), 0.0);
+    outNormal = vec4(facingNormal(vNormal, facingGeometricNormal(vPosition, toLight)), 0.0);
     outFlux = vec4(base.rgb * flux, 0.0);
 }

@@ -33,21 +33,25 @@ vec4 materialBaseColor(vec2 uv, vec3 vertexColor) {
     return color;
 }
 
-// Interpolated normal, made unit and turned to the side of the triangle that faces `towards`
-// (all surfaces are two-sided). The side is the triangle's: its geometric normal (exact from the
-// position's derivatives, which the whole pixel quad takes on one triangle's plane) faced
-// towards the viewer. Turning the interpolated normal itself to face the viewer would flip it
-// wherever smooth shading tilts it past edge-on (a curtain's folds, a vault's ribs seen at a
-// grazing angle) and point it into the surface: cones would then start behind it.
-// A degenerate interpolated normal falls back to the geometric one.
-vec3 facingNormal(vec3 interpolated, vec3 position, vec3 towards) {
+// The triangle's unit geometric normal turned to face `towards` (all surfaces are two-sided):
+// exact from the position's derivatives, which the whole pixel quad takes on one triangle's plane.
+vec3 facingGeometricNormal(vec3 position, vec3 towards) {
     vec3 geometric = cross(dFdx(position), dFdy(position));
     if (!(dot(geometric, geometric) > 0.0)) geometric = towards;
-    if (dot(geometric, towards) < 0.0) geometric = -geometric;
+    geometric = normalize(geometric);
+    return dot(geometric, towards) < 0.0 ? -geometric : geometric;
+}
+
+// Interpolated normal, made unit and turned to the side of the triangle its facing geometric
+// normal (facingGeometricNormal) shows. Turning the interpolated normal itself to face the viewer
+// would flip it wherever smooth shading tilts it past edge-on (a curtain's folds seen at a grazing
+// angle) and point it into the surface: cones would then start behind it. A degenerate
+// interpolated normal falls back to the geometric one.
+vec3 facingNormal(vec3 interpolated, vec3 facingGeometric) {
     vec3 n = interpolated;
-    if (!(dot(n, n) > 1e-24)) n = geometric;
+    if (!(dot(n, n) > 1e-24)) n = facingGeometric;
     n = normalize(n);
-    return dot(n, geometric) < 0.0 ? -n : n;
+    return dot(n, facingGeometric) < 0.0 ? -n : n;
 }
 
 // The texture's colour alone (white without a texture) times the vertex colour, and the full

@@ -236,9 +236,10 @@ TEST(DirectLighting, OneSampleOfAShadowEdgeShowsTheLitShareOfItsPixel) {
 // (away from the camera), so from the camera they point away even though the face the camera
 // sees is the front. Turned to face the camera by itself, the normal would point into the
 // curtain: the cones would start behind it, in the sunlit half (101 % of the lit floor's
-// radiance). Turned to the side the triangle shows the camera, it stays dark but for the ring
-// cones that lean behind the curtain's plane and reach around its edge, 1 m away (6 %): the
-// path tracer gives directions behind the triangle nothing, a cone cannot tell them apart.
+// radiance). Turned to the side the triangle shows the camera, the ring cones that lean behind
+// the curtain's plane would still reach around its edge, 1 m away (6 %); the path tracer gives
+// directions behind the triangle nothing, and so do the cones, by the share of each that lies
+// behind the triangle's own plane (the G-buffer's geometric normal): 1.4 %.
 TEST(DirectLighting, ASmoothCurtainSeenGrazingStaysDarkOnItsUnlitSide) {
     const auto dir = test::testDir();
     std::ofstream(dir / "curtain.mtl") << "newmtl white\nKd 0.6 0.6 0.6\n";
@@ -263,7 +264,7 @@ TEST(DirectLighting, ASmoothCurtainSeenGrazingStaysDarkOnItsUnlitSide) {
     const double curtain = windowMean(image, 48, 36, 2, 0);
     std::printf("[ normals  ] grazing view of a smooth curtain's unlit side: %.4f, %.2f %% of the sunlit floor\n",
                 curtain, 100.0 * curtain / litFloor);
-    EXPECT_LT(curtain, 0.1 * litFloor);
+    EXPECT_LT(curtain, 0.03 * litFloor);
 }
 
 // A wall lit at 15° from its plane under a ledge that sticks out 0.4 m at 2 m: the ledge shadows

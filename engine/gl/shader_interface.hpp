@@ -67,6 +67,7 @@
     X(TEXTURE_GBUFFER_NORMAL, 1)                                                                  \
     X(TEXTURE_GBUFFER_POSITION, 2)                                                                \
     X(TEXTURE_GBUFFER_EMISSIVE, 3)                                                                \
+    X(TEXTURE_GBUFFER_GEOMETRIC_NORMAL, 7) /* cone_trace, cone_upsample: the triangle's own side */ \
     X(TEXTURE_SHADOW_MAP, 3)         /* direct_lighting: the light-view depth */                  \
     X(TEXTURE_DIRECT, 4)                                                                          \
     X(TEXTURE_DEBUG_IMAGE, 5)                                                                     \

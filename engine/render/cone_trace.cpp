@@ -58,8 +58,9 @@ void setConeMarchUniforms(gl::ComputeCall& call, const Octree& octree, const Rad
     std::vector<float> tangents, weights;
     for (const Cone& c : cones) {
         directions.push_back(c.direction);
-        // Wider than ~80° a cone reaches the coarsest level within a step or two.
-        tangents.push_back(std::min(std::tan(c.halfAngle) * settings.apertureScale, 5.0f));
+        // Wider than ~80° a cone reaches the coarsest level within a step or two. (The single
+        // cone's half-angle is π/2, whose float tangent is a huge negative number.)
+        tangents.push_back(std::min(std::tan(std::min(c.halfAngle, 1.5f)) * settings.apertureScale, 5.0f));
         weights.push_back(c.weight);
     }
     const GLuint p = call.program();
@@ -95,6 +96,7 @@ void ConeTrace::render(const GBuffer& gbuffer, const Octree& octree, const Radia
     gl::ComputeCall trace(program_);
     setConeMarchUniforms(trace, octree, radiance, settings);
     trace.texture(gl::TEXTURE_GBUFFER_NORMAL, gbuffer.normal())
+        .texture(gl::TEXTURE_GBUFFER_GEOMETRIC_NORMAL, gbuffer.geometricNormal())
         .texture(gl::TEXTURE_GBUFFER_POSITION, gbuffer.position())
         .storage(gl::SSBO_CONE_COUNTERS, counters_)
         .image(gl::IMAGE_INDIRECT, half ? traced_.id() : indirect_.id(), GL_WRITE_ONLY, GL_RGBA32F)
@@ -114,6 +116,7 @@ void ConeTrace::render(const GBuffer& gbuffer, const Octree& octree, const Radia
         gl::ComputeCall upsample(upsampleProgram_);
         setConeMarchUniforms(upsample, octree, radiance, settings);
         upsample.texture(gl::TEXTURE_GBUFFER_NORMAL, gbuffer.normal())
+            .texture(gl::TEXTURE_GBUFFER_GEOMETRIC_NORMAL, gbuffer.geometricNormal())
             .texture(gl::TEXTURE_GBUFFER_POSITION, gbuffer.position())
             .texture(gl::TEXTURE_TRACED_IRRADIANCE, traced)
             .texture(gl::TEXTURE_TRACED_PIXEL, tracedPixel_.id())

@@ -13,6 +13,7 @@ GBuffer::GBuffer(int width, int height)
       normal_(gl::createTexture2D(GL_RGBA16F, width, height, 1, "gbuffer normal")),
       position_(gl::createTexture2D(GL_RGBA32F, width, height, 1, "gbuffer position")),
       emissive_(gl::createTexture2D(GL_RGBA32F, width, height, 1, "gbuffer emissive")),
+      geometricNormal_(gl::createTexture2D(GL_RGBA16F, width, height, 1, "gbuffer geometric normal")),
       depth_(gl::createTexture2D(GL_DEPTH_COMPONENT32F, width, height, 1, "gbuffer depth")),
       framebuffer_(gl::createFramebuffer("gbuffer")),
       program_(gl::buildProgram({{GL_VERTEX_SHADER, "scene.vert"}, {GL_FRAGMENT_SHADER, "gbuffer.frag"}})) {
@@ -21,19 +22,21 @@ GBuffer::GBuffer(int width, int height)
     glNamedFramebufferTexture(fbo, GL_COLOR_ATTACHMENT1, normal_.id(), 0);
     glNamedFramebufferTexture(fbo, GL_COLOR_ATTACHMENT2, position_.id(), 0);
     glNamedFramebufferTexture(fbo, GL_COLOR_ATTACHMENT3, emissive_.id(), 0);
+    glNamedFramebufferTexture(fbo, GL_COLOR_ATTACHMENT4, geometricNormal_.id(), 0);
     glNamedFramebufferTexture(fbo, GL_DEPTH_ATTACHMENT, depth_.id(), 0);
-    const GLenum buffers[] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1, GL_COLOR_ATTACHMENT2, GL_COLOR_ATTACHMENT3};
-    glNamedFramebufferDrawBuffers(fbo, 4, buffers);
+    const GLenum buffers[] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1, GL_COLOR_ATTACHMENT2, GL_COLOR_ATTACHMENT3,
+                              GL_COLOR_ATTACHMENT4};
+    glNamedFramebufferDrawBuffers(fbo, 5, buffers);
     if (glCheckNamedFramebufferStatus(fbo, GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
         fail("the G-buffer framebuffer is incomplete on this driver (", width, "x", height, ")");
 }
 
-std::size_t GBuffer::bytes() const { return std::size_t(width_) * height_ * (8 + 8 + 16 + 16 + 4); }
+std::size_t GBuffer::bytes() const { return std::size_t(width_) * height_ * (8 + 8 + 16 + 16 + 8 + 4); }
 
 void GBuffer::render(const GpuScene& scene, const ViewTransform& camera, float textureLodBias) {
     gl::beginRasterPass({framebuffer_.id(), width_, height_, true});
     const float zero[4] = {0, 0, 0, 0};
-    for (int i = 0; i < 4; ++i) glClearNamedFramebufferfv(framebuffer_.id(), GL_COLOR, i, zero);
+    for (int i = 0; i < 5; ++i) glClearNamedFramebufferfv(framebuffer_.id(), GL_COLOR, i, zero);
     glClearNamedFramebufferfv(framebuffer_.id(), GL_DEPTH, 0, zero);  // reversed depth: far = 0
     glUseProgram(program_.id());
     gl::setUniform(program_.id(), "uViewProjection", camera.viewProjection);

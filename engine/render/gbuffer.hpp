@@ -18,13 +18,16 @@ public:
     GLuint normal() const { return normal_.id(); }      // RGBA16F unit normal facing the camera
     GLuint position() const { return position_.id(); }  // RGBA32F scene-local position, w=0 sky
     GLuint emissive() const { return emissive_.id(); }  // RGBA32F emitted radiance (any intensity)
+    // RGBA16F the triangle's own unit normal facing the camera (the normal() of smooth shading may
+    // lean from it: directions behind the triangle receive no light).
+    GLuint geometricNormal() const { return geometricNormal_.id(); }
     int width() const { return width_; }
     int height() const { return height_; }
     std::size_t bytes() const;
 
 private:
     int width_, height_;
-    gl::Texture albedo_, normal_, position_, emissive_, depth_;
+    gl::Texture albedo_, normal_, position_, emissive_, geometricNormal_, depth_;
     gl::Framebuffer framebuffer_;
     gl::Program program_;
 };
