@@ -2,33 +2,33 @@
 set terminal pngcairo size 2100,700 enhanced font 'DejaVu Sans,10'
 set output "bench_readme_sponza_balcony.png"
 $engine << EOD
-212 0.00273708 0.00273708 "GI off"
-2049 0.00157662 0.00157662 "default"
+209.7 0.00273708 0.00273708 "GI off"
+2097 0.00157007 0.00157007 "default"
 EOD
 $pathtracer << EOD
-33.16 0.0177069 0.0177069 "1"
-64.68 0.0133459 0.0133459 "2"
-129.5 0.00957402 0.00957402 "4"
-261.1 0.00682156 0.00682156 "8"
-521.7 0.00490017 0.00490017 "16"
-1031 0.00348164 0.00348164 "32"
-2072 0.00249175 0.00249175 "64"
-3991 0.00183139 0.00183139 "128"
+32.98 0.0177069 0.0177069 "1"
+61.91 0.0133459 0.0133459 "2"
+120.3 0.00957402 0.00957402 "4"
+235.7 0.00682156 0.00682156 "8"
+461.6 0.00490017 0.00490017 "16"
+927.9 0.00348164 0.00348164 "32"
+1845 0.00249175 0.00249175 "64"
+3685 0.00183139 0.00183139 "128"
 EOD
 $pareto << EOD
-212 0.00273708 0.00273708 "GI off"
-2049 0.00157662 0.00157662 "default"
+209.7 0.00273708 0.00273708 "GI off"
+2097 0.00157007 0.00157007 "default"
 EOD
 $paretoIndirect << EOD
-212 0.00273708 0.00273708 "GI off"
-2049 0.00157662 0.00157662 "default"
+209.7 0.00273708 0.00273708 "GI off"
+2097 0.00157007 0.00157007 "default"
 EOD
 $default << EOD
-2049 0.00157662 0.00157662 "default"
+2097 0.00157007 0.00157007 "default"
 EOD
 set xtics ("1" 1, "2" 2, "5" 5, "10" 10, "20" 20, "50" 50, "100" 100, "200" 200, "500" 500, "1000" 1000, "2000" 2000, "5000" 5000, "10000" 10000, "20000" 20000, "50000" 50000, "100000" 100000, "200000" 200000, "500000" 500000)
 noise = 0.000609846
-set multiplot layout 1,3 title "sponza 320x180: error against time, vct settings and the path tracer (1 bounce, reference 1024 spp), llvmpipe (LLVM 15.0.6, 256 bits), 2026-11-24" font ',12'
+set multiplot layout 1,3 title "sponza 320x180: error against time, vct settings and the path tracer (1 bounce, reference 1024 spp), llvmpipe (LLVM 15.0.6, 256 bits), 2026-11-25" font ',12'
 set logscale xy
 set grid xtics ytics mxtics mytics lc rgb '#e0e0e0'
 set xlabel 'time (ms, log): vct full warm frame / path-tracer render, same CPU'
@@ -60,8 +60,8 @@ unset logscale y
 set ytics auto
 set format y '%g'
 set xtics ("10" 10, "20" 20, "50" 50, "100" 100, "200" 200, "500" 500, "1000" 1000, "2000" 2000, "5000" 5000, "10000" 10000, "20000" 20000, "50000" 50000, "100000" 100000, "200000" 200000, "500000" 500000)
-set xrange [163.053:3688.21]
-set yrange [0.00148379:0.00282992]
+set xrange [161.313:3774.17]
+set yrange [0.0014767:0.00283044]
 set key top left box opaque font ',9'
 set ylabel 'RMSE of the full image vs reference (linear)'
 set title 'vct points only (zoom; full image)'
