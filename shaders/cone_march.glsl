@@ -283,10 +283,13 @@ vec4 gatherIrradiance(vec3 origin, vec3 normal, vec3 surfaceNormal) {
         float tanHalfAngle = uConeTanHalfAngle[c];
         float inFront = min(coneShareAbove(direction, tanHalfAngle, surfaceNormal) /
                                 max(coneShareAbove(direction, tanHalfAngle, normal), 1e-3), 1.0);
-        if (inFront <= 0.0) continue;
-        coneAxis = direction;
-        coneSpread(direction, tanHalfAngle, coneAlongPlus, coneAlongMinus);
-        gathered += uConeWeight[c] * inFront * traceCone(origin, normal, direction, tanHalfAngle);
+        vec4 cone = vec4(0.0, 0.0, 0.0, 1.0);  // the share behind the triangle: blocked by it
+        if (inFront > 0.0) {
+            coneAxis = direction;
+            coneSpread(direction, tanHalfAngle, coneAlongPlus, coneAlongMinus);
+            cone = mix(cone, traceCone(origin, normal, direction, tanHalfAngle), inFront);
+        }
+        gathered += uConeWeight[c] * cone;
     }
     return gathered;
 }

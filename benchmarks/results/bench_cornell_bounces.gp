@@ -2,29 +2,29 @@
 set terminal pngcairo size 2100,700 enhanced font 'DejaVu Sans,10'
 set output "bench_cornell_bounces.png"
 $engine << EOD
-1812 0.0335754 0.0310305 "default"
-4788 0.0369187 0.0344238 "bounces=2"
-1.096e+04 0.0408031 0.038511 "bounces=4"
+1830 0.0327495 0.0304686 "default"
+4076 0.0361157 0.0338705 "bounces=2"
+8854 0.039952 0.0378908 "bounces=4"
 EOD
 $pathtracer << EOD
-10.13 0.152846 0.152266 "1"
-41.36 0.0747809 0.0742655 "4"
-163.6 0.0376246 0.0373476 "16"
-655 0.0189356 0.0188115 "64"
-2634 0.0096764 0.00960391 "256"
+10.31 0.152846 0.152266 "1"
+41.7 0.0747809 0.0742655 "4"
+166.6 0.0376246 0.0373476 "16"
+667.6 0.0189356 0.0188115 "64"
+2697 0.0096764 0.00960391 "256"
 EOD
 $pareto << EOD
-1812 0.0335754 0.0310305 "default"
+1830 0.0327495 0.0304686 "default"
 EOD
 $paretoIndirect << EOD
-1812 0.0335754 0.0310305 "default"
+1830 0.0327495 0.0304686 "default"
 EOD
 $default << EOD
-1812 0.0335754 0.0310305 "default"
+1830 0.0327495 0.0304686 "default"
 EOD
-set xtics ("1" 1, "2" 2, "5" 5, "10" 10, "20" 20, "50" 50, "100" 100, "200" 200, "500" 500, "1000" 1000, "2000" 2000, "5000" 5000, "10000" 10000, "20000" 20000, "50000" 50000, "100000" 100000, "200000" 200000, "500000" 500000, "1e+06" 1e+06, "2e+06" 2e+06, "5e+06" 5e+06)
+set xtics ("1" 1, "2" 2, "5" 5, "10" 10, "20" 20, "50" 50, "100" 100, "200" 200, "500" 500, "1000" 1000, "2000" 2000, "5000" 5000, "10000" 10000, "20000" 20000, "50000" 50000, "100000" 100000, "200000" 200000, "500000" 500000)
 noise = 0.00233982
-set multiplot layout 1,3 title "cornell 320x240: error against time, vct settings and the path tracer (1 bounce, reference 4096 spp), llvmpipe (LLVM 15.0.6, 256 bits), 2026-11-24" font ',12'
+set multiplot layout 1,3 title "cornell 320x240: error against time, vct settings and the path tracer (1 bounce, reference 4096 spp), llvmpipe (LLVM 15.0.6, 256 bits), 2026-11-25" font ',12'
 set logscale xy
 set grid xtics ytics mxtics mytics lc rgb '#e0e0e0'
 set xlabel 'time (ms, log): vct full warm frame / path-tracer render, same CPU'
@@ -55,9 +55,9 @@ set offsets 0, 0, 0, 0
 unset logscale y
 set ytics auto
 set format y '%g'
-set xtics ("100" 100, "200" 200, "500" 500, "1000" 1000, "2000" 2000, "5000" 5000, "10000" 10000, "20000" 20000, "50000" 50000, "100000" 100000, "200000" 200000, "500000" 500000, "1e+06" 1e+06, "2e+06" 2e+06, "5e+06" 5e+06)
-set xrange [1393.96:19722.6]
-set yrange [0.0329972:0.0413813]
+set xtics ("100" 100, "200" 200, "500" 500, "1000" 1000, "2000" 2000, "5000" 5000, "10000" 10000, "20000" 20000, "50000" 50000, "100000" 100000, "200000" 200000, "500000" 500000)
+set xrange [1407.61:15936.5]
+set yrange [0.0321733:0.0405282]
 set key top left box opaque font ',9'
 set ylabel 'RMSE of the full image vs reference (linear)'
 set title 'vct points only (zoom; full image)'

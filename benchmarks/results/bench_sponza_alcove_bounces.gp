@@ -2,27 +2,27 @@
 set terminal pngcairo size 2100,700 enhanced font 'DejaVu Sans,10'
 set output "bench_sponza_alcove_bounces.png"
 $engine << EOD
-2125 0.0166474 0.00593933 "default"
-2.142e+04 0.0168784 0.00627094 "bounces=4"
+2090 0.0151285 0.00535438 "default"
+1.263e+04 0.0153093 0.00566616 "bounces=4"
 EOD
 $pathtracer << EOD
-40.6 0.0305151 0.0246558 "1"
-153.6 0.01625 0.012588 "4"
-579.2 0.00840984 0.006406 "16"
-2401 0.00423959 0.00327345 "64"
+35.49 0.0305094 0.0246569 "1"
+137.9 0.0162541 0.012598 "4"
+539.1 0.0084139 0.00641549 "16"
+2180 0.00424466 0.00327996 "64"
 EOD
 $pareto << EOD
-2125 0.0166474 0.00593933 "default"
+2090 0.0151285 0.00535438 "default"
 EOD
 $paretoIndirect << EOD
-2125 0.0166474 0.00593933 "default"
+2090 0.0151285 0.00535438 "default"
 EOD
 $default << EOD
-2125 0.0166474 0.00593933 "default"
+2090 0.0151285 0.00535438 "default"
 EOD
 set xtics ("1" 1, "2" 2, "5" 5, "10" 10, "20" 20, "50" 50, "100" 100, "200" 200, "500" 500, "1000" 1000, "2000" 2000, "5000" 5000, "10000" 10000, "20000" 20000, "50000" 50000, "100000" 100000, "200000" 200000, "500000" 500000, "1e+06" 1e+06, "2e+06" 2e+06, "5e+06" 5e+06)
-noise = 0.0014846
-set multiplot layout 1,3 title "sponza 320x180: error against time, vct settings and the path tracer (1 bounce, reference 512 spp), llvmpipe (LLVM 15.0.6, 256 bits), 2026-11-24" font ',12'
+noise = 0.00148557
+set multiplot layout 1,3 title "sponza 320x180: error against time, vct settings and the path tracer (1 bounce, reference 512 spp), llvmpipe (LLVM 15.0.6, 256 bits), 2026-11-25" font ',12'
 set logscale xy
 set grid xtics ytics mxtics mytics lc rgb '#e0e0e0'
 set xlabel 'time (ms, log): vct full warm frame / path-tracer render, same CPU'
@@ -54,8 +54,8 @@ unset logscale y
 set ytics auto
 set format y '%g'
 set xtics ("100" 100, "200" 200, "500" 500, "1000" 1000, "2000" 2000, "5000" 5000, "10000" 10000, "20000" 20000, "50000" 50000, "100000" 100000, "200000" 200000, "500000" 500000, "1e+06" 1e+06, "2e+06" 2e+06, "5e+06" 5e+06)
-set xrange [1634.82:38559.1]
-set yrange [0.016629:0.0168969]
+set xrange [1607.65:22726.6]
+set yrange [0.0150673:0.0153705]
 set key top left box opaque font ',9'
 set ylabel 'RMSE of the full image vs reference (linear)'
 set title 'vct points only (zoom; full image)'
