@@ -75,6 +75,10 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
                 if (texture->rgba.size() != std::size_t(texture->width) * texture->height * 4) std::abort();
             return 0;
         }
+        // Each input starts from an empty folder: a file an earlier input left (a model.mtl that
+        // an OBJ-text .glb names) would make a crash depend on the run's history, and its
+        // artifact would not reproduce it alone.
+        for (const auto& entry : std::filesystem::directory_iterator(workDir())) std::filesystem::remove_all(entry);
         const char* names[] = {"model.gltf", "model.glb", "model.obj"};
         const std::filesystem::path model = workDir() / names[mode];
         std::string_view file = body;
