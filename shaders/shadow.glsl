@@ -45,7 +45,7 @@ vec2 receiverDepthSlope(vec3 p, vec3 n, float step, vec3 centre, vec2 size, floa
 // a sideways texel moves the shadow edge of an overhang along the wall by several texels.
 // Everything scales with the texel, so it works at any scene scale.
 // `spanX`, `spanY`: the pixel sample's footprint on the surface, the parallelogram of ±½ of each
-// (world units; 0 for none). Where it covers more of the map than the filter's 2r + 1 texels (a
+// (world units; both 0 for none). Where it covers more of the map than the filter's 2r + 1 texels (a
 // map finer than the pixel would otherwise alias its shadow edges), the filter becomes a grid of
 // bilinear comparisons over it instead, each at the depth the surface has there.
 float shadowVisibility(vec3 p, vec3 n, vec3 toLight, float distanceToLight, vec3 spanX, vec3 spanY) {
@@ -60,23 +60,25 @@ float shadowVisibility(vec3 p, vec3 n, vec3 toLight, float distanceToLight, vec3
     float texelDepth = abs(shadowMapPoint(offsetPoint + toLight * texel, size).z - centre.z);
     vec2 slope = receiverDepthSlope(offsetPoint, n, texel, centre, size, 32.0 * texelDepth);
     float margin = abs(slope.x) + abs(slope.y);
-    vec3 mapX = shadowMapPoint(offsetPoint + spanX, size) - centre;
-    vec3 mapY = shadowMapPoint(offsetPoint + spanY, size) - centre;
     float filterTexels = float(2 * uPcfRadius + 1);
-    float extent = max(length(mapX.xy), length(mapY.xy));
-    if (extent > filterTexels) {
-        // cells × cells comparisons at the centres of as many cells of the footprint, about three
-        // texels apart up to 5 × 5 (finer grids changed no measured image; a wider PCF keeps its
-        // 2r + 1), each blurred by its bilinear tent.
-        int cells = max(min(int(ceil(extent / 3.0)), 5), 2 * uPcfRadius + 1);
-        float lit = 0.0;
-        for (int y = 0; y < cells; ++y)
-            for (int x = 0; x < cells; ++x) {
-                vec2 cell = (vec2(x, y) + 0.5) / float(cells) - 0.5;
-                vec3 at = centre + cell.x * mapX + cell.y * mapY;
-                lit += texture(uShadowMap, vec3((at.xy + 0.5) / size, at.z + margin));
-            }
-        return lit / float(cells * cells);
+    if (spanX != vec3(0.0)) {
+        vec3 mapX = shadowMapPoint(offsetPoint + spanX, size) - centre;
+        vec3 mapY = shadowMapPoint(offsetPoint + spanY, size) - centre;
+        float extent = max(length(mapX.xy), length(mapY.xy));
+        if (extent > filterTexels) {
+            // cells × cells comparisons at the centres of as many cells of the footprint, about
+            // three texels apart up to 5 × 5 (finer grids changed no measured image; a wider PCF
+            // keeps its 2r + 1), each blurred by its bilinear tent.
+            int cells = max(min(int(ceil(extent / 3.0)), 5), 2 * uPcfRadius + 1);
+            float lit = 0.0;
+            for (int y = 0; y < cells; ++y)
+                for (int x = 0; x < cells; ++x) {
+                    vec2 cell = (vec2(x, y) + 0.5) / float(cells) - 0.5;
+                    vec3 at = centre + cell.x * mapX + cell.y * mapY;
+                    lit += texture(uShadowMap, vec3((at.xy + 0.5) / size, at.z + margin));
+                }
+            return lit / float(cells * cells);
+        }
     }
     // The filter: (2r + 1)² bilinear comparisons one texel apart, a box of 2r + 1 texels blurred
     // by the bilinear tent. Per axis that weighs the 2r + 2 texels around the point 1 − f, 1, …,

@@ -23,7 +23,7 @@ struct RenderSettings {
     // 6144 is the smallest that brings 16 pixel samples of Sponza's direct light within 0.012 RMSE
     // of the path tracer; one sample stays filtered over its pixel (shadow.glsl), so a map finer
     // than the pixel does not alias (docs/benchmark.md). A point light's faces get half
-    // (shadowMapResolution in render/light_view.hpp).
+    // (shadowMapSide in render/light_view.hpp).
     int shadowMapResolution = 6144;
     int pcfRadius = 1;               // shadow filter: (2r+1)² hardware-bilinear taps
     DisplaySettings display;

@@ -1,10 +1,17 @@
 #include "render/gbuffer.hpp"
 
+#include <iterator>
+
 #include "core/error.hpp"
 #include "gl/raster_state.hpp"
 #include "gl/shader.hpp"
 
 namespace vct {
+namespace {
+constexpr GLenum kColorTargets[] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1, GL_COLOR_ATTACHMENT2,
+                                    GL_COLOR_ATTACHMENT3, GL_COLOR_ATTACHMENT4};
+constexpr GLsizei kColorTargetCount = GLsizei(std::size(kColorTargets));
+}  // namespace
 
 GBuffer::GBuffer(int width, int height)
     : width_(width),
@@ -24,9 +31,7 @@ GBuffer::GBuffer(int width, int height)
     glNamedFramebufferTexture(fbo, GL_COLOR_ATTACHMENT3, emissive_.id(), 0);
     glNamedFramebufferTexture(fbo, GL_COLOR_ATTACHMENT4, geometricNormal_.id(), 0);
     glNamedFramebufferTexture(fbo, GL_DEPTH_ATTACHMENT, depth_.id(), 0);
-    const GLenum buffers[] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1, GL_COLOR_ATTACHMENT2, GL_COLOR_ATTACHMENT3,
-                              GL_COLOR_ATTACHMENT4};
-    glNamedFramebufferDrawBuffers(fbo, 5, buffers);
+    glNamedFramebufferDrawBuffers(fbo, kColorTargetCount, kColorTargets);
     if (glCheckNamedFramebufferStatus(fbo, GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
         fail("the G-buffer framebuffer is incomplete on this driver (", width, "x", height, ")");
 }
@@ -36,7 +41,7 @@ std::size_t GBuffer::bytes() const { return std::size_t(width_) * height_ * (8 +
 void GBuffer::render(const GpuScene& scene, const ViewTransform& camera, float textureLodBias) {
     gl::beginRasterPass({framebuffer_.id(), width_, height_, true});
     const float zero[4] = {0, 0, 0, 0};
-    for (int i = 0; i < 5; ++i) glClearNamedFramebufferfv(framebuffer_.id(), GL_COLOR, i, zero);
+    for (GLint i = 0; i < kColorTargetCount; ++i) glClearNamedFramebufferfv(framebuffer_.id(), GL_COLOR, i, zero);
     glClearNamedFramebufferfv(framebuffer_.id(), GL_DEPTH, 0, zero);  // reversed depth: far = 0
     glUseProgram(program_.id());
     gl::setUniform(program_.id(), "uViewProjection", camera.viewProjection);

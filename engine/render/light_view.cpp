@@ -66,7 +66,7 @@ LightViewPrograms lightViewPrograms() {
 
 int lightViewCount(const Light& light) { return light.type == LightType::Point ? kCubeFaces : 1; }
 
-int shadowMapResolution(const Light& light, int requested) {
+int shadowMapSide(const Light& light, int requested) {
     return light.type == LightType::Point ? std::max(16, requested / 2) : requested;
 }
 

@@ -64,7 +64,7 @@ int lightViewCount(const Light& light);
 // light's cube faces get half. A face spans 90°, so at half the scene's size from the light its
 // texels are about as wide as those of a sun's map over the whole scene; six full-size faces
 // would cost six maps' memory and fill for edges no finer than the sun's.
-int shadowMapResolution(const Light& light, int requested);
+int shadowMapSide(const Light& light, int requested);
 
 // Every light's maps, in the order of the scene's lights.
 using LightViewSets = std::vector<std::vector<LightViewMap>>;

@@ -25,7 +25,7 @@ std::uint32_t LightViewCache::update(const GpuScene& gpuScene, const Scene& scen
         const int count = lightViewCount(lights[i]);
         if (int(maps.size()) != count) {
             maps.clear();
-            const int shadowResolution = shadowMapResolution(lights[i], key.shadowResolution);
+            const int shadowResolution = shadowMapSide(lights[i], key.shadowResolution);
             for (int face = 0; face < count; ++face) maps.emplace_back(key.resolution, shadowResolution);
         }
         for (int face = 0; face < count; ++face) maps[face].render(programs_, gpuScene, scene, lights[i], face);

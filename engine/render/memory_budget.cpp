@@ -78,8 +78,10 @@ MemoryEstimate estimate(const Scene& scene, const MemoryRequest& r) {
         return std::size_t(r.lightViewResolution) * std::size_t(r.lightViewResolution) * 44 + shadowTexels * 4;
     };
     e.lightViewMaps = 0;
-    for (const Light& light : scene.lights)
-        e.lightViewMaps += mapBytes(shadowMapResolution(light, r.shadowMapResolution)) * std::size_t(lightViewCount(light));
+    for (const Light& light : scene.lights) {
+        const std::size_t maps = std::size_t(lightViewCount(light));
+        e.lightViewMaps += mapBytes(shadowMapSide(light, r.shadowMapResolution)) * maps;
+    }
     if (scene.lights.empty()) e.lightViewMaps = mapBytes(r.shadowMapResolution);
     e.sceneData = scene.vertices.size() * sizeof(Vertex) + scene.indices.size() * 4 + scene.materials.size() * 32;
     for (const Texture& t : scene.textures) e.sceneData += std::size_t(t.width) * std::size_t(t.height) * 4 * 4 / 3;
