@@ -4,11 +4,11 @@ layout(local_size_x = 8, local_size_y = 8) in;
 // through the radiance bricks (cone_march.glsl) and add up to the indirect irradiance E.
 // Output: E (rgb) and ambient visibility (a: 1 = nothing in the way).
 //
-// With uDownscale = 1 every pixel is traced, straight into the indirect image. With 2, one pixel
-// of each 2×2 block is traced into a quarter-size image, with the pixel it traced (or NO_TRACED_PIXEL when
-// the whole block is sky); cone_upsample.comp then gives every pixel its irradiance from the
-// traced pixels that share its surface. Which pixel of a block is traced turns with uRotation (the
-// pixel sample), so that accumulated samples trace every pixel in turn.
+// With uDownscale = 1 every pixel is traced, straight into the indirect image. With B = 2 or 4, one
+// pixel of each B×B block is traced into an image 1/B the size per side, with the pixel it traced
+// (or NO_TRACED_PIXEL when the whole block is sky); cone_upsample.comp then gives every pixel its
+// irradiance from the traced pixels that share its surface. Which pixel of a block is traced turns
+// with uRotation (the pixel sample), so that accumulated samples trace every pixel in turn.
 #include "cone_march.glsl"
 #include "cone_trace_common.glsl"
 
@@ -21,6 +21,16 @@ uniform int uDownscale;
 uniform int uRotation;
 
 const ivec2 kBlockOrder[4] = ivec2[](ivec2(0, 0), ivec2(1, 1), ivec2(1, 0), ivec2(0, 1));
+// For 4×4 blocks: the 4×4 ordered-dither sequence, each step as far from the ones before as it
+// can be (so that a few accumulated samples already spread over the block), shifted to start
+// next to the block's centre, where the upsampling's bilinear weights place the traced point.
+const ivec2 kBlockOrder4[16] = ivec2[](ivec2(1, 1), ivec2(3, 3), ivec2(3, 1), ivec2(1, 3), ivec2(2, 2), ivec2(0, 0),
+                                       ivec2(0, 2), ivec2(2, 0), ivec2(2, 1), ivec2(0, 3), ivec2(0, 1), ivec2(2, 3),
+                                       ivec2(1, 2), ivec2(3, 0), ivec2(3, 2), ivec2(1, 0));
+
+ivec2 blockPixel(int k) {
+    return uDownscale == 2 ? kBlockOrder[(k + uRotation) & 3] : kBlockOrder4[(k + uRotation) & 15];
+}
 
 void main() {
     const ivec2 cell = ivec2(gl_GlobalInvocationID.xy);
@@ -32,8 +42,8 @@ void main() {
     vec4 position = texelFetch(uPosition, pixel, 0);
     if (uDownscale > 1) {
         position.w = 0.0;
-        for (int k = 0; k < 4 && position.w <= 0.0; ++k) {
-            const ivec2 candidate = cell * 2 + kBlockOrder[(k + uRotation) & 3];
+        for (int k = 0; k < uDownscale * uDownscale && position.w <= 0.0; ++k) {
+            const ivec2 candidate = cell * uDownscale + blockPixel(k);
             if (any(greaterThanEqual(candidate, imageSize))) continue;
             pixel = candidate;
             position = texelFetch(uPosition, pixel, 0);

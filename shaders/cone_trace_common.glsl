@@ -4,12 +4,14 @@
 // What the cone passes did and saved, as 64-bit counts (low word, high word): samples taken,
 // samples that empty-space skipping saved (the steps the skipped nodes would have cost), pixels
 // that saw the sky, pixels whose own cones were traced. Read back by ConeTrace::statistics.
-layout(std430, binding = SSBO_CONE_COUNTERS) buffer ConeCounters { uint coneCounters[8]; };
+// Then the length of cone_upsample's list of pixels that trace their own cones.
+layout(std430, binding = SSBO_CONE_COUNTERS) buffer ConeCounters { uint coneCounters[9]; };
 
 const uint CONE_COUNTER_SAMPLES = 0u;
 const uint CONE_COUNTER_SAMPLES_SAVED = 2u;
 const uint CONE_COUNTER_SKY_PIXELS = 4u;
 const uint CONE_COUNTER_TRACED_PIXELS = 6u;
+const uint CONE_COUNTER_OWN_TRACES = 8u;
 
 void count64(uint index, uint value) {
     if (value == 0u) return;

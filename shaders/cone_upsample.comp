@@ -1,11 +1,18 @@
 #version 450
+#ifdef TRACE_LISTED
+layout(local_size_x = 64) in;
+#else
 layout(local_size_x = 8, local_size_y = 8) in;
-// cone_upsample (with cone_trace at half resolution): every pixel's indirect irradiance from the
-// traced pixels of the four nearest blocks (cone_trace.comp), each weighted by how near its block
+#endif
+// cone_upsample (with cone_trace at half or quarter resolution): every pixel's indirect irradiance
+// from the traced pixels of the four nearest blocks (cone_trace.comp), each weighted by how near its block
 // is (bilinear), how alike the normals are and how close the traced point lies to this pixel's
 // tangent plane. Irradiance varies slowly along a surface but jumps across edges, so a neighbour on
 // another surface must not count. A pixel that no neighbour shares its surface with (a thin
-// object, a silhouette) traces its own cones, so no pixel takes light from the wrong surface.
+// object, a silhouette) traces its own cones, so no pixel takes light from the wrong surface:
+// the upsampling lists those pixels, and a second dispatch (TRACE_LISTED) traces them. Scattered
+// among pixels that only interpolate, each would hold up its whole SIMD group; listed, every
+// invocation of the second dispatch traces.
 #include "cone_march.glsl"
 #include "cone_trace_common.glsl"
 
@@ -14,6 +21,21 @@ layout(binding = TEXTURE_GBUFFER_POSITION) uniform sampler2D uPosition;
 layout(binding = TEXTURE_TRACED_IRRADIANCE) uniform sampler2D uTraced;
 layout(binding = TEXTURE_TRACED_PIXEL) uniform usampler2D uTracedPixel;
 layout(rgba32f, binding = IMAGE_INDIRECT) uniform writeonly image2D uIndirect;
+
+uniform int uDownscale;  // pixels per side of a traced block: 2 or 4
+
+// Pixels that trace their own cones (packTracedPixel), their count in coneCounters.
+layout(std430, binding = SSBO_OWN_TRACE_PIXELS) buffer OwnTracePixels { uint ownTracePixels[]; };
+
+#ifdef TRACE_LISTED
+void main() {
+    const uint listed = linearInvocation();
+    if (listed >= coneCounters[CONE_COUNTER_OWN_TRACES]) return;
+    const ivec2 pixel = unpackTracedPixel(ownTracePixels[listed]);
+    const vec3 position = texelFetch(uPosition, pixel, 0).xyz;
+    imageStore(uIndirect, pixel, tracePixel(pixel, position, normalize(texelFetch(uNormal, pixel, 0).xyz)));
+}
+#else
 
 // Weights of a neighbour (sameSurfaceWeight): a point one voxel off the tangent plane keeps e⁻¹
 // of it; below kMinWeight the pixel has no neighbour on its surface.
@@ -31,8 +53,9 @@ void main() {
     }
     const vec3 normal = normalize(texelFetch(uNormal, pixel, 0).xyz);
     const ivec2 blocks = textureSize(uTraced, 0);
-    // Block centres sit at 2·cell + 0.5 in pixels: the four around this pixel and their bilinear weights.
-    const vec2 at = (vec2(pixel) + 0.5) * 0.5 - 0.5;
+    // Block centres sit at B·cell + (B − 1)/2 in pixels: the four around this pixel and their
+    // bilinear weights.
+    const vec2 at = (vec2(pixel) + 0.5) / float(uDownscale) - 0.5;
     const ivec2 base = ivec2(floor(at));
     const vec2 f = at - vec2(base);
     vec4 sum = vec4(0.0);
@@ -55,5 +78,6 @@ void main() {
         imageStore(uIndirect, pixel, sum / weightSum);
         return;
     }
-    imageStore(uIndirect, pixel, tracePixel(pixel, position.xyz, normal));
+    ownTracePixels[atomicAdd(coneCounters[CONE_COUNTER_OWN_TRACES], 1u)] = packTracedPixel(pixel);
 }
+#endif

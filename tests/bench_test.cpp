@@ -99,7 +99,7 @@ TEST(Bench, SweepExpandsOneParameterAtATime) {
     EXPECT_EQ(points[7].settings.pixelSamples, 8);
     EXPECT_EQ(points[6].settings.pixelSamples, 1);
     EXPECT_EQ(points[8].settings.giResolution, GiResolution::Full);
-    EXPECT_EQ(points[0].settings.giResolution, GiResolution::Half) << "the engine's default";
+    EXPECT_EQ(points[0].settings.giResolution, GiResolution::Auto) << "the engine's default";
     EXPECT_EQ(sweep.curveSeed, sweep.referenceSeed + 1) << "the curve's samples are independent of the reference's";
 }
 

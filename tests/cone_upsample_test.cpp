@@ -1,7 +1,7 @@
-// Cones at half resolution (--gi-resolution half, shaders/cone_upsample.comp): about a quarter of
-// the pixels traced, and the indirect light the same as at full resolution where it matters to a
-// viewer (its mean and its regions); accumulated samples trace every pixel in turn, so they close
-// the remaining gap.
+// Cones at half or quarter resolution (--gi-resolution, shaders/cone_upsample.comp): about a
+// quarter (a sixteenth) of the pixels traced, and the indirect light the same as at full
+// resolution where it matters to a viewer (its mean and its regions); accumulated samples trace
+// every pixel in turn, so they close the remaining gap.
 #include <cstdio>
 
 #include "gl/context.hpp"
@@ -15,10 +15,10 @@ using namespace vct;
 
 namespace {
 
-RenderSettings indirectSettings(GiResolution resolution) {
+RenderSettings indirectSettings(GiResolution resolution, int width, int height) {
     RenderSettings s;
-    s.width = 160;
-    s.height = 120;
+    s.width = width;
+    s.height = height;
     s.voxelLevels = 7;
     s.lightViewResolution = 1024;
     s.display.aov = Aov::Indirect;
@@ -31,8 +31,9 @@ struct IndirectImage {
     ConeStatistics cones;
 };
 
-IndirectImage renderIndirect(const Scene& scene, GiResolution resolution, int samples) {
-    Renderer renderer(scene, indirectSettings(resolution));
+IndirectImage renderIndirect(const Scene& scene, GiResolution resolution, int samples, int width = 160,
+                             int height = 120) {
+    Renderer renderer(scene, indirectSettings(resolution, width, height));
     for (int sample = 0; sample < samples; ++sample) renderer.renderFrame(scene.cameras[0], sample);
     return {renderer.readHdr(), renderer.statistics().cones};
 }
@@ -61,6 +62,35 @@ TEST(ConeUpsample, HalfResolutionTracesAQuarterOfThePixelsAndKeepsTheLight) {
     EXPECT_NEAR(ratio, 1.0, 0.02);
     // The largest cell, the floor in front of the short box, measured 1.057 without the edge-aware
     // filter and 1.061 with it (at half resolution it filters the traced blocks, at full every pixel).
+    for (const metrics::RegionCell& cell : regions.cells)
+        if (cell.significant && cell.ratio) EXPECT_NEAR(*cell.ratio, 1.0, 0.07) << cell.column << "," << cell.row;
+}
+
+// Quarter resolution is what `auto` chooses from 360 lines up: at 480×360 a Cornell voxel of the
+// 128³ grid covers about three pixels, so one traced pixel in 16 still samples every voxel face.
+TEST(ConeUpsample, QuarterResolutionTracesASixteenthOfThePixelsAndKeepsTheLight) {
+    auto context = gl::createContext(gl::defaultBackend());
+    const Scene scene = makeCornellBox();
+    const IndirectImage full = renderIndirect(scene, GiResolution::Full, 1, 480, 360);
+    const IndirectImage quarter = renderIndirect(scene, GiResolution::Quarter, 1, 480, 360);
+    const IndirectImage automatic = renderIndirect(scene, GiResolution::Auto, 1, 480, 360);
+    EXPECT_TRUE(automatic.image.rgba == quarter.image.rgba) << "auto traces 4x4 blocks from 360 lines up";
+    EXPECT_EQ(giBlockSize(GiResolution::Auto, 640, 359), 2) << "and 2x2 blocks below";
+
+    const double tracedShare = double(quarter.cones.tracedPixels) / double(full.cones.tracedPixels);
+    std::printf("[ upsample ] quarter: traced pixels %llu of %llu (%.4f); cone samples %.4f of full\n",
+                static_cast<unsigned long long>(quarter.cones.tracedPixels),
+                static_cast<unsigned long long>(full.cones.tracedPixels), tracedShare,
+                double(quarter.cones.samples) / double(full.cones.samples));
+    EXPECT_EQ(quarter.cones.skyPixels, full.cones.skyPixels);
+    EXPECT_GT(tracedShare, 1.0 / 16.0) << "one pixel of every block that sees a surface";
+    EXPECT_LT(tracedShare, 0.075) << "and few pixels that share their surface with no traced pixel";
+
+    const metrics::RegionRatios regions = metrics::regionRatios(quarter.image, full.image, 3, 3);
+    const double ratio = regions.meanA / regions.meanB;
+    std::printf("[ upsample ] indirect light quarter/full %.4f, cells %.3f..%.3f\n", ratio,
+                regions.minRatioSignificant.value_or(0.0), regions.maxRatioSignificant.value_or(0.0));
+    EXPECT_NEAR(ratio, 1.0, 0.02);
     for (const metrics::RegionCell& cell : regions.cells)
         if (cell.significant && cell.ratio) EXPECT_NEAR(*cell.ratio, 1.0, 0.07) << cell.column << "," << cell.row;
 }

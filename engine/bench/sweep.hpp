@@ -24,8 +24,8 @@
 // cone_offset, cone_lift, bricks, light_view_res, pcf_radius, gi, bounces (each bounces point is measured
 // against a reference with as many bounces), samples (pixel samples each image averages, as
 // `vct render --samples`; the point's times are those of all its samples together),
-// gi_resolution ("full" or "half", `--gi-resolution`), shadow_res (`--shadow-res`), gi_filter
-// (`--gi-filter`, voxels; 0: off).
+// gi_resolution ("auto", "full", "half" or "quarter", `--gi-resolution`), shadow_res
+// (`--shadow-res`), gi_filter (`--gi-filter`, voxels; 0: off).
 #include <cstdint>
 #include <filesystem>
 #include <optional>

@@ -40,8 +40,8 @@ void addRenderSettingsOptions(CLI::App& command, RenderSettingsOptions& o) {
         ->capture_default_str();
     command.add_option("--gi-resolution", o.giResolution,
                        "half: cones at one pixel of each 2x2 block, the others take the irradiance of traced "
-                       "pixels on their own surface (about 4x fewer cones, as close to the path tracer); full: at "
-                       "every pixel")
+                       "pixels on their own surface (about 4x fewer cones, as close to the path tracer); quarter: "
+                       "one of each 4x4 block; full: at every pixel; auto: quarter from 360 lines up, else half")
         ->capture_default_str();
     command.add_option("--gi-filter", o.giFilter,
                        "width of the edge-aware filter of the indirect light along surfaces, in voxels (0: off); "

@@ -43,6 +43,7 @@
     X(SSBO_BOUNCE_BASE, 24)          /* bounce_gather: every cell's first-bounce radiance */      \
     X(SSBO_CELL_OPACITY, 25)                                                                      \
     X(SSBO_BOUNCE_LIST, 26)          /* bounce_gather: cells that gather their own bounce */      \
+    X(SSBO_OWN_TRACE_PIXELS, 27)     /* cone_upsample: pixels that trace their own cones */        \
     /* Image units (glBindImageTexture). */                                                       \
     X(IMAGE_FRAGMENTS, 0)            /* voxel-fragment list, RGBA32UI */                          \
     X(IMAGE_FRAGMENT_NODE, 1)        /* the node of each fragment, R32UI */                       \
@@ -56,7 +57,7 @@
     X(IMAGE_DIRECTIONAL_RADIANCE, 2) /* the radiance pool of the six directions */                \
     X(IMAGE_DIRECT, 0)                                                                            \
     X(IMAGE_INDIRECT, 0)                                                                          \
-    X(IMAGE_TRACED_PIXEL, 1)         /* cone_trace at half resolution: the pixel each block traced */ \
+    X(IMAGE_TRACED_PIXEL, 1)         /* cone_trace in blocks: the pixel each block traced */ \
     X(IMAGE_VOXEL_VIEW, 0)                                                                        \
     X(IMAGE_HDR, 0)                                                                               \
     X(IMAGE_LDR, 1)                                                                               \

@@ -15,6 +15,10 @@ public:
     ListDispatch();
     // Dispatches `call`'s program over listCounts[countSlot] items in groups of 64.
     void dispatch(const gl::ComputeCall& call, const RadianceVolume& volume, unsigned countSlot, GLbitfield barriers);
+    // The same for a count kept elsewhere: uints `counts`[countSlot], the dispatch arguments
+    // written to `args` at argsSlot (three uints each).
+    void dispatch(const gl::ComputeCall& call, const gl::Buffer& counts, unsigned countSlot, const gl::Buffer& args,
+                  unsigned argsSlot, GLbitfield barriers);
 
 private:
     gl::Program args_;

@@ -32,7 +32,7 @@ struct RenderSettings {
     bool photons = true;     // inject light (false: only emission and ambient occlusion)
     int bounces = 1;         // light bounces the indirect light holds (1..kMaxBounces)
     ConeSettings cones;
-    GiResolution giResolution = GiResolution::Half;  // cones at one pixel per 2×2 block, or at every pixel
+    GiResolution giResolution = GiResolution::Auto;  // cones at every pixel, or at one per 2×2 or 4×4 block
     float giFilter = kDefaultGiFilterVoxels;  // the cones' edge-aware filter, σ along surfaces in voxels; 0: off
     int voxelLevels = 8;     // octree resolution 2^voxelLevels
     int voxelViewLevel = 0;  // level shown by the voxel views; 0 = voxelLevels (the voxels)

@@ -1,5 +1,6 @@
 #include "render/cone_trace.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 
@@ -9,12 +10,18 @@
 
 namespace vct {
 
+namespace {
+// In the cone counters (cone_trace_common.glsl): after four 64-bit counts, the length of the list
+// of pixels that trace their own cones.
+constexpr unsigned kOwnTraceCountSlot = 8;
+}  // namespace
+
 ConeTrace::ConeTrace(int width, int height)
     : width_(width),
       height_(height),
       indirect_(gl::createTexture2D(GL_RGBA32F, width, height, 1, "indirect irradiance")),
       program_(gl::buildProgram({{GL_COMPUTE_SHADER, "cone_trace.comp"}})),
-      counters_(gl::createBuffer(32, nullptr, GL_DYNAMIC_STORAGE_BIT, "cone counters")) {}
+      counters_(gl::createBuffer(4 * (kOwnTraceCountSlot + 1), nullptr, GL_DYNAMIC_STORAGE_BIT, "cone counters")) {}
 
 ConeStatistics ConeTrace::statistics() const {
     std::uint32_t c[8] = {};
@@ -25,17 +32,51 @@ ConeStatistics ConeTrace::statistics() const {
 
 std::size_t ConeTrace::bytes() const {
     const std::size_t full = std::size_t(width_) * height_ * 16;
-    const std::size_t blocks = std::size_t((width_ + 1) / 2) * ((height_ + 1) / 2);
-    return full + (traced_.id() ? blocks * (16 + 4) : 0) + (filter_ ? filter_->bytes() : 0);
+    const int b = std::max(tracedBlock_, 1);
+    const std::size_t blocks = traced_.id() ? std::size_t((width_ + b - 1) / b) * ((height_ + b - 1) / b) : 0;
+    const std::size_t ownTraceList = ownTracePixels_.id() ? std::size_t(width_) * height_ * 4 : 0;
+    return full + blocks * (16 + 4) + ownTraceList + (filter_ ? filter_->bytes() : 0);
 }
 
 GiResolution parseGiResolution(const std::string& name) {
+    if (name == "auto") return GiResolution::Auto;
     if (name == "full") return GiResolution::Full;
     if (name == "half") return GiResolution::Half;
-    fail("unknown --gi-resolution '", name, "'; use full (cones at every pixel) or half (at one pixel of each 2x2 block)");
+    if (name == "quarter") return GiResolution::Quarter;
+    fail("unknown --gi-resolution '", name,
+         "'; use auto (quarter from 360 lines up, else half), full (cones at every pixel), half (at one pixel of each "
+         "2x2 block) or quarter (of each 4x4 block)");
 }
 
-const char* giResolutionName(GiResolution resolution) { return resolution == GiResolution::Half ? "half" : "full"; }
+const char* giResolutionName(GiResolution resolution) {
+    switch (resolution) {
+        case GiResolution::Full: return "full";
+        case GiResolution::Half: return "half";
+        case GiResolution::Quarter: return "quarter";
+        case GiResolution::Auto: return "auto";
+    }
+    return "auto";
+}
+
+int giBlockSize(GiResolution resolution, int width, int height) {
+    switch (resolution) {
+        case GiResolution::Full: return 1;
+        case GiResolution::Half: return 2;
+        case GiResolution::Quarter: return 4;
+        case GiResolution::Auto: return std::min(width, height) >= kQuarterResolutionLines ? 4 : 2;
+    }
+    return 2;
+}
+
+GiResolution nextGiResolution(GiResolution resolution) {
+    switch (resolution) {
+        case GiResolution::Auto: return GiResolution::Full;
+        case GiResolution::Full: return GiResolution::Half;
+        case GiResolution::Half: return GiResolution::Quarter;
+        case GiResolution::Quarter: return GiResolution::Auto;
+    }
+    return GiResolution::Auto;
+}
 
 void validateConeSettings(const ConeSettings& s) {
     makeConeSet(s.cones);  // throws for an unknown set
@@ -83,12 +124,19 @@ void setConeMarchUniforms(gl::ComputeCall& call, const Octree& octree, const Rad
 
 void ConeTrace::render(const GBuffer& gbuffer, const Octree& octree, const RadianceVolume& radiance,
                        const ConeSettings& settings, GiResolution resolution, int rotation, float filterVoxels) {
-    const bool half = resolution == GiResolution::Half;
-    const int tracedWidth = half ? (width_ + 1) / 2 : width_, tracedHeight = half ? (height_ + 1) / 2 : height_;
-    if (half && !traced_.id()) {
+    const int block = giBlockSize(resolution, width_, height_);
+    const bool inBlocks = block > 1;  // one pixel of each block traced, the others upsampled
+    const int tracedWidth = (width_ + block - 1) / block, tracedHeight = (height_ + block - 1) / block;
+    if (inBlocks && tracedBlock_ != block) {
         traced_ = gl::createTexture2D(GL_RGBA32F, tracedWidth, tracedHeight, 1, "indirect irradiance, traced blocks");
         tracedPixel_ = gl::createTexture2D(GL_R32UI, tracedWidth, tracedHeight, 1, "traced pixel of each block");
+        tracedBlock_ = block;
+    }
+    if (inBlocks && !upsampleProgram_.id()) {
         upsampleProgram_ = gl::buildProgram({{GL_COMPUTE_SHADER, "cone_upsample.comp"}});
+        traceListedProgram_ = gl::buildProgram({{GL_COMPUTE_SHADER, "cone_upsample.comp"}}, {"TRACE_LISTED 1"});
+        ownTracePixels_ = gl::createBuffer(GLsizeiptr(4) * width_ * height_, nullptr, 0, "pixels that trace their own cones");
+        dispatchArgs_ = gl::createBuffer(12, nullptr, 0, "own traces' dispatch arguments");
     }
     const std::uint32_t zero = 0;
     glClearNamedBufferData(counters_.id(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
@@ -99,30 +147,39 @@ void ConeTrace::render(const GBuffer& gbuffer, const Octree& octree, const Radia
         .texture(gl::TEXTURE_GBUFFER_GEOMETRIC_NORMAL, gbuffer.geometricNormal())
         .texture(gl::TEXTURE_GBUFFER_POSITION, gbuffer.position())
         .storage(gl::SSBO_CONE_COUNTERS, counters_)
-        .image(gl::IMAGE_INDIRECT, half ? traced_.id() : indirect_.id(), GL_WRITE_ONLY, GL_RGBA32F)
-        .image(gl::IMAGE_TRACED_PIXEL, half ? tracedPixel_.id() : 0, GL_WRITE_ONLY, GL_R32UI)
-        .uniform("uDownscale", half ? 2 : 1)
-        .uniform("uRotation", rotation & 3)
+        .image(gl::IMAGE_INDIRECT, inBlocks ? traced_.id() : indirect_.id(), GL_WRITE_ONLY, GL_RGBA32F)
+        .image(gl::IMAGE_TRACED_PIXEL, inBlocks ? tracedPixel_.id() : 0, GL_WRITE_ONLY, GL_R32UI)
+        .uniform("uDownscale", block)
+        .uniform("uRotation", rotation & (block * block - 1))
         .dispatchImage(tracedWidth, tracedHeight, GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
-    // The filter runs on the traced image; a different image size (the other GI resolution) makes
+    // The filter runs on the traced image; a different image size (another GI resolution) makes
     // a new one.
-    GLuint traced = half ? traced_.id() : indirect_.id();
+    GLuint traced = inBlocks ? traced_.id() : indirect_.id();
     if (filterVoxels > 0.0f) {
         if (!filter_ || filter_->width() != tracedWidth) filter_ = std::make_unique<IndirectFilter>(tracedWidth, tracedHeight);
-        traced = filter_->render(gbuffer, traced, half ? tracedPixel_.id() : 0, octree.grid.voxelSize, filterVoxels);
+        traced = filter_->render(gbuffer, traced, inBlocks ? tracedPixel_.id() : 0, octree.grid.voxelSize, filterVoxels);
     }
-    result_ = half ? indirect_.id() : traced;
-    if (half) {
-        gl::ComputeCall upsample(upsampleProgram_);
-        setConeMarchUniforms(upsample, octree, radiance, settings);
-        upsample.texture(gl::TEXTURE_GBUFFER_NORMAL, gbuffer.normal())
-            .texture(gl::TEXTURE_GBUFFER_GEOMETRIC_NORMAL, gbuffer.geometricNormal())
-            .texture(gl::TEXTURE_GBUFFER_POSITION, gbuffer.position())
-            .texture(gl::TEXTURE_TRACED_IRRADIANCE, traced)
-            .texture(gl::TEXTURE_TRACED_PIXEL, tracedPixel_.id())
-            .storage(gl::SSBO_CONE_COUNTERS, counters_)
-            .image(gl::IMAGE_INDIRECT, indirect_.id(), GL_WRITE_ONLY, GL_RGBA32F)
-            .dispatchImage(width_, height_, GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+    result_ = inBlocks ? indirect_.id() : traced;
+    if (inBlocks) {
+        // Every pixel from the traced blocks, or listed to trace its own cones; then the listed.
+        auto prepare = [&](const gl::Program& program) {
+            gl::ComputeCall call(program);
+            setConeMarchUniforms(call, octree, radiance, settings);
+            call.texture(gl::TEXTURE_GBUFFER_NORMAL, gbuffer.normal())
+                .texture(gl::TEXTURE_GBUFFER_GEOMETRIC_NORMAL, gbuffer.geometricNormal())
+                .texture(gl::TEXTURE_GBUFFER_POSITION, gbuffer.position())
+                .texture(gl::TEXTURE_TRACED_IRRADIANCE, traced)
+                .texture(gl::TEXTURE_TRACED_PIXEL, tracedPixel_.id())
+                .uniform("uDownscale", block)
+                .storage(gl::SSBO_CONE_COUNTERS, counters_)
+                .storage(gl::SSBO_OWN_TRACE_PIXELS, ownTracePixels_)
+                .image(gl::IMAGE_INDIRECT, indirect_.id(), GL_WRITE_ONLY, GL_RGBA32F);
+            return call;
+        };
+        prepare(upsampleProgram_)
+            .dispatchImage(width_, height_, GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+        listDispatch_.dispatch(prepare(traceListedProgram_), counters_, kOwnTraceCountSlot, dispatchArgs_, 0,
+                               GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
     }
     gl::checkErrors("tracing cones");
 }

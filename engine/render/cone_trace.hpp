@@ -6,6 +6,7 @@
 
 #include "gl/compute.hpp"
 #include "gl/objects.hpp"
+#include "lighting/list_dispatch.hpp"
 #include "lighting/radiance_volume.hpp"
 #include "render/cone_set.hpp"
 #include "render/gbuffer.hpp"
@@ -26,11 +27,20 @@ struct ConeSettings {
 };
 
 // How many pixels one trace of the cone set serves: each pixel its own, or one pixel of each 2×2
-// block, the others taking theirs from the traced pixels that share their surface
-// (shaders/cone_upsample.comp; a pixel that shares its surface with none traces its own).
-enum class GiResolution { Full, Half };
-GiResolution parseGiResolution(const std::string& name);  // "full" or "half"; throws naming the option
+// (half) or 4×4 (quarter) block, the others taking theirs from the traced pixels that share their
+// surface (shaders/cone_upsample.comp; a pixel that shares its surface with none traces its own).
+// Auto: quarter for images of at least kQuarterResolutionLines lines (and columns), half below.
+// The indirect light varies on the scale of voxels, not pixels: at 640×360 a Sponza voxel covers
+// several pixels, and tracing one pixel in 16 is as close to the path tracer as one in 4; in a
+// small image a block of 4×4 pixels spans more of the scene, and half keeps the finer detail.
+enum class GiResolution { Full, Half, Quarter, Auto };
+constexpr int kQuarterResolutionLines = 360;
+GiResolution parseGiResolution(const std::string& name);  // "auto", "full", "half" or "quarter"; throws naming the option
 const char* giResolutionName(GiResolution resolution);
+// Pixels per side of the block one trace serves (1, 2 or 4) in an image of width × height.
+int giBlockSize(GiResolution resolution, int width, int height);
+// The viewer's key: auto, every pixel, 2×2, 4×4, auto.
+GiResolution nextGiResolution(GiResolution resolution);
 
 // Throws naming the option for a setting out of its range (an unknown cone set, aperture,
 // step, offset, lift, maximum distance).
@@ -63,9 +73,12 @@ public:
 private:
     int width_, height_;
     gl::Texture indirect_;
-    gl::Texture traced_, tracedPixel_;  // half resolution only, made on first use
-    gl::Program program_, upsampleProgram_;
+    gl::Texture traced_, tracedPixel_;  // half or quarter resolution only, made on first use
+    int tracedBlock_ = 0;               // the block size they were made for
+    gl::Program program_, upsampleProgram_, traceListedProgram_;
     gl::Buffer counters_;
+    gl::Buffer ownTracePixels_, dispatchArgs_;  // cone_upsample's list of pixels that trace their own
+    ListDispatch listDispatch_;
     std::unique_ptr<IndirectFilter> filter_;  // sized for the traced image, made on first use
     GLuint result_ = 0;                       // indirect_, or at full resolution the filter's image
 };

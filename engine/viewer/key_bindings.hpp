@@ -14,7 +14,7 @@ enum class Action {
     ToggleBricks,        // B
     TogglePhotons,       // P
     NextBounceCount,     // N       bounces 1, 2, … kMaxBounces, then 1 again
-    ToggleGiResolution,  // H       cones at every pixel <-> at one pixel of each 2×2 block
+    ToggleGiResolution,  // H       cones at: auto -> every pixel -> 2×2 blocks -> 4×4 blocks -> auto
     ToggleVoxelView,     // V       lit <-> octree albedo
     ToggleRadianceView,  // Shift+V lit <-> octree radiance
     CoarserLevel,        // [       voxel views: one octree level up

@@ -200,9 +200,12 @@ void settingsSection(ViewerState& state, bool& changed) {
     changed |= ImGui::Checkbox("photons (P)", &s.photons);
     ImGui::SameLine();
     changed |= ImGui::Checkbox("bricks (B)", &s.bricks);
-    bool halfResolution = s.giResolution == GiResolution::Half;
-    if (ImGui::Checkbox("GI at half resolution (H)", &halfResolution)) {
-        s.giResolution = halfResolution ? GiResolution::Half : GiResolution::Full;
+    static const char* const giResolutions[] = {"every pixel", "2x2 blocks", "4x4 blocks", "auto"};
+    static_assert(int(GiResolution::Full) == 0 && int(GiResolution::Half) == 1 && int(GiResolution::Quarter) == 2 &&
+                  int(GiResolution::Auto) == 3);
+    int giResolution = int(s.giResolution);
+    if (ImGui::Combo("cones traced at (H)", &giResolution, giResolutions, 4)) {
+        s.giResolution = GiResolution(giResolution);
         changed = true;
     }
     changed |= ImGui::SliderFloat("GI filter (voxels, 0 = off)", &s.giFilter, 0.0f, 16.0f, "%.1f",

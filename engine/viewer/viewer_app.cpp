@@ -183,8 +183,8 @@ private:
                 status(std::to_string(s.bounces) + (s.bounces == 1 ? " bounce" : " bounces"));
                 break;
             case Action::ToggleGiResolution:
-                s.giResolution = s.giResolution == GiResolution::Full ? GiResolution::Half : GiResolution::Full;
-                status(s.giResolution == GiResolution::Full ? "GI at every pixel" : "GI at half resolution");
+                s.giResolution = nextGiResolution(s.giResolution);
+                status(std::string("GI resolution ") + giResolutionName(s.giResolution));
                 break;
             case Action::ToggleVoxelView:
                 s.view = s.view == ViewMode::Voxels ? ViewMode::Lit : ViewMode::Voxels;
