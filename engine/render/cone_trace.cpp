@@ -141,15 +141,20 @@ void ConeTrace::render(const GBuffer& gbuffer, const Octree& octree, const Radia
     const std::uint32_t zero = 0;
     glClearNamedBufferData(counters_.id(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
 
-    gl::ComputeCall trace(program_);
-    setConeMarchUniforms(trace, octree, radiance, settings);
-    trace.texture(gl::TEXTURE_GBUFFER_NORMAL, gbuffer.normal())
-        .texture(gl::TEXTURE_GBUFFER_GEOMETRIC_NORMAL, gbuffer.geometricNormal())
-        .texture(gl::TEXTURE_GBUFFER_POSITION, gbuffer.position())
-        .storage(gl::SSBO_CONE_COUNTERS, counters_)
+    // Every pass that traces cones reads the cone set, the pixels' surfaces and the counters.
+    auto tracingCall = [&](const gl::Program& program) {
+        gl::ComputeCall call(program);
+        setConeMarchUniforms(call, octree, radiance, settings);
+        call.texture(gl::TEXTURE_GBUFFER_NORMAL, gbuffer.normal())
+            .texture(gl::TEXTURE_GBUFFER_GEOMETRIC_NORMAL, gbuffer.geometricNormal())
+            .texture(gl::TEXTURE_GBUFFER_POSITION, gbuffer.position())
+            .storage(gl::SSBO_CONE_COUNTERS, counters_)
+            .uniform("uDownscale", block);
+        return call;
+    };
+    tracingCall(program_)
         .image(gl::IMAGE_INDIRECT, inBlocks ? traced_.id() : indirect_.id(), GL_WRITE_ONLY, GL_RGBA32F)
         .image(gl::IMAGE_TRACED_PIXEL, inBlocks ? tracedPixel_.id() : 0, GL_WRITE_ONLY, GL_R32UI)
-        .uniform("uDownscale", block)
         .uniform("uRotation", rotation & (block * block - 1))
         .dispatchImage(tracedWidth, tracedHeight, GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
     // The filter runs on the traced image; a different image size (another GI resolution) makes
@@ -162,23 +167,17 @@ void ConeTrace::render(const GBuffer& gbuffer, const Octree& octree, const Radia
     result_ = inBlocks ? indirect_.id() : traced;
     if (inBlocks) {
         // Every pixel from the traced blocks, or listed to trace its own cones; then the listed.
-        auto prepare = [&](const gl::Program& program) {
-            gl::ComputeCall call(program);
-            setConeMarchUniforms(call, octree, radiance, settings);
-            call.texture(gl::TEXTURE_GBUFFER_NORMAL, gbuffer.normal())
-                .texture(gl::TEXTURE_GBUFFER_GEOMETRIC_NORMAL, gbuffer.geometricNormal())
-                .texture(gl::TEXTURE_GBUFFER_POSITION, gbuffer.position())
-                .texture(gl::TEXTURE_TRACED_IRRADIANCE, traced)
+        auto upsampleCall = [&](const gl::Program& program) {
+            gl::ComputeCall call = tracingCall(program);
+            call.texture(gl::TEXTURE_TRACED_IRRADIANCE, traced)
                 .texture(gl::TEXTURE_TRACED_PIXEL, tracedPixel_.id())
-                .uniform("uDownscale", block)
-                .storage(gl::SSBO_CONE_COUNTERS, counters_)
                 .storage(gl::SSBO_OWN_TRACE_PIXELS, ownTracePixels_)
                 .image(gl::IMAGE_INDIRECT, indirect_.id(), GL_WRITE_ONLY, GL_RGBA32F);
             return call;
         };
-        prepare(upsampleProgram_)
+        upsampleCall(upsampleProgram_)
             .dispatchImage(width_, height_, GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
-        listDispatch_.dispatch(prepare(traceListedProgram_), counters_, kOwnTraceCountSlot, dispatchArgs_, 0,
+        listDispatch_.dispatch(upsampleCall(traceListedProgram_), counters_, kOwnTraceCountSlot, dispatchArgs_, 0,
                                GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
     }
     gl::checkErrors("tracing cones");
