@@ -5,9 +5,9 @@ layout(local_size_x = 64) in;
 layout(local_size_x = 8, local_size_y = 8) in;
 #endif
 // cone_upsample (with cone_trace at half or quarter resolution): every pixel's indirect irradiance
-// from the traced pixels of the four nearest blocks (cone_trace.comp), each weighted by how near its block
-// is (bilinear), how alike the normals are and how close the traced point lies to this pixel's
-// tangent plane. Irradiance varies slowly along a surface but jumps across edges, so a neighbour on
+// from the traced pixels of the four nearest blocks (cone_trace.comp), each weighted by how near
+// its block is (bilinear), how alike the normals are and how close the traced point lies to this
+// pixel's tangent plane. Irradiance varies slowly along a surface but jumps across edges, so a neighbour on
 // another surface must not count. A pixel that no neighbour shares its surface with (a thin
 // object, a silhouette) traces its own cones, so no pixel takes light from the wrong surface:
 // the upsampling lists those pixels, and a second dispatch (TRACE_LISTED) traces them. Scattered

@@ -19,10 +19,10 @@ layout(local_size_x = 8, local_size_y = 8) in;
 layout(binding = TEXTURE_GBUFFER_NORMAL) uniform sampler2D uNormal;
 layout(binding = TEXTURE_GBUFFER_POSITION) uniform sampler2D uPosition;
 layout(binding = TEXTURE_TRACED_IRRADIANCE) uniform sampler2D uIrradiance;
-layout(binding = TEXTURE_TRACED_PIXEL) uniform usampler2D uTracedPixel;  // with uDownscale 2
+layout(binding = TEXTURE_TRACED_PIXEL) uniform usampler2D uTracedPixel;  // with uDownscale > 1
 layout(rgba32f, binding = IMAGE_INDIRECT) uniform writeonly image2D uFiltered;
 
-uniform int uDownscale;     // 1: a cell is its pixel; 2: uTracedPixel says which pixel it traced
+uniform int uDownscale;     // 1: a cell is its pixel; > 1: uTracedPixel says which pixel it traced
 uniform int uTapSpacing;    // in cells
 uniform float uVoxelScale;  // voxels per world unit
 uniform float uSigma;       // voxels

@@ -1,5 +1,5 @@
-// Which pixel a cell of the traced image took its cones from: at half resolution cone_trace.comp
-// traces one pixel of each 2×2 block and records it (x | y << 16) for the passes that use the
+// Which pixel a cell of the traced image took its cones from: in blocks cone_trace.comp traces one
+// pixel of each 2×2 or 4×4 block and records it (x | y << 16) for the passes that use the
 // cell's irradiance (cone_upsample.comp, indirect_filter.comp), and how much a traced point
 // counts for another pixel's surface in those passes.
 

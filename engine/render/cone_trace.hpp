@@ -61,8 +61,8 @@ struct ConeStatistics {
 class ConeTrace {
 public:
     ConeTrace(int width, int height);
-    // `rotation` turns which pixel of each block is traced at half resolution (the pixel sample,
-    // so that accumulated samples trace every pixel in turn). `filterVoxels`: the width of the
+    // `rotation` turns which pixel of each block is traced (the pixel sample, so that
+    // accumulated samples trace every pixel in turn). `filterVoxels`: the width of the
     // edge-aware filter of what the cones traced (indirect_filter.hpp), 0: none.
     void render(const GBuffer& gbuffer, const Octree& octree, const RadianceVolume& radiance, const ConeSettings& settings,
                 GiResolution resolution, int rotation, float filterVoxels);

@@ -4,8 +4,9 @@
 // (blocks a few voxels wide) are error against the path tracer, while irradiance along one surface
 // varies slowly. The filter fits each traced point's irradiance to the traced points on its own
 // surface within a few voxels (a plane by weighted least squares; world distance, normal and
-// tangent plane weight them: shaders/indirect_filter.comp) and leaves other surfaces alone. It runs on the image the cones
-// traced, before half-resolution cones are upsampled, so it costs a quarter there.
+// tangent plane weight them: shaders/indirect_filter.comp) and leaves other surfaces alone. It
+// runs on the image the cones traced, before cones traced in blocks are upsampled, so it costs a
+// quarter (2×2 blocks) or a sixteenth (4×4) there.
 #include "gl/objects.hpp"
 #include "render/gbuffer.hpp"
 
@@ -26,7 +27,7 @@ public:
     IndirectFilter(int width, int height);  // the traced image's size
     // Filters `traced` (RGBA32F: irradiance, visibility per traced cell) with a Gaussian of
     // `voxels` voxels along the surfaces of `gbuffer`; `tracedPixel` (0: each cell is its pixel)
-    // names the pixel each cell traced at half resolution. `voxelSize` in world units. Returns the
+    // names the pixel each cell traced in blocks. `voxelSize` in world units. Returns the
     // filtered image (owned by the filter, valid until the next call).
     GLuint render(const GBuffer& gbuffer, GLuint traced, GLuint tracedPixel, double voxelSize, float voxels);
     int width() const { return width_; }

@@ -65,7 +65,7 @@ void halveMaps(MemoryRequest& r) {
 
 MemoryEstimate estimate(const Scene& scene, const MemoryRequest& r) {
     MemoryEstimate e;
-    // G-buffer 60, direct 16, indirect 16 (and 20 per 2×2 block for half-resolution cones, 5 per
+    // G-buffer 60, direct 16, indirect 16 (and 20 per 2×2 block for cones traced in blocks, 5 per
     // pixel, plus 4 for the list of pixels that trace their own), composite 36 (average, sum,
     // 8-bit), voxel view 16 bytes per pixel.
     e.imageTargets = std::size_t(r.width) * std::size_t(r.height) * (60 + 16 + 16 + 5 + 4 + 36 + 16);
