@@ -97,3 +97,25 @@ TEST(ConeUpsample, AccumulatedSamplesTraceEveryPixelInTurn) {
     std::printf("[ upsample ] RMSE half against full: %.4f with 1 sample, %.4f with 4\n", oneSample, fourSamples);
     EXPECT_LT(fourSamples, 0.8 * oneSample);
 }
+
+// The viewer switches the block size of a running renderer: each switch must give the image a
+// renderer made with that size gives. At 2 pixels wide 2×2 and 4×4 blocks make traced images of
+// the same width (one block), only their heights differ.
+TEST(ConeUpsample, SwitchingTheBlockSizeGivesTheImageOfAFreshRenderer) {
+    auto context = gl::createContext(gl::defaultBackend());
+    const Scene scene = makeCornellBox();
+    const IndirectImage freshHalf = renderIndirect(scene, GiResolution::Half, 1, 2, 16);
+    const IndirectImage freshQuarter = renderIndirect(scene, GiResolution::Quarter, 1, 2, 16);
+    RenderSettings s = indirectSettings(GiResolution::Half, 2, 16);
+    Renderer renderer(scene, s);
+    renderer.renderFrame(scene.cameras[0]);
+    EXPECT_TRUE(renderer.readHdr().rgba == freshHalf.image.rgba);
+    s.giResolution = GiResolution::Quarter;
+    renderer.setSettings(s);
+    renderer.renderFrame(scene.cameras[0]);
+    EXPECT_TRUE(renderer.readHdr().rgba == freshQuarter.image.rgba) << "2x2 -> 4x4";
+    s.giResolution = GiResolution::Half;
+    renderer.setSettings(s);
+    renderer.renderFrame(scene.cameras[0]);
+    EXPECT_TRUE(renderer.readHdr().rgba == freshHalf.image.rgba) << "4x4 -> 2x2";
+}

@@ -161,7 +161,8 @@ void ConeTrace::render(const GBuffer& gbuffer, const Octree& octree, const Radia
     // a new one.
     GLuint traced = inBlocks ? traced_.id() : indirect_.id();
     if (filterVoxels > 0.0f) {
-        if (!filter_ || filter_->width() != tracedWidth) filter_ = std::make_unique<IndirectFilter>(tracedWidth, tracedHeight);
+        if (!filter_ || filter_->width() != tracedWidth || filter_->height() != tracedHeight)
+            filter_ = std::make_unique<IndirectFilter>(tracedWidth, tracedHeight);
         traced = filter_->render(gbuffer, traced, inBlocks ? tracedPixel_.id() : 0, octree.grid.voxelSize, filterVoxels);
     }
     result_ = inBlocks ? indirect_.id() : traced;

@@ -31,6 +31,7 @@ public:
     // filtered image (owned by the filter, valid until the next call).
     GLuint render(const GBuffer& gbuffer, GLuint traced, GLuint tracedPixel, double voxelSize, float voxels);
     int width() const { return width_; }
+    int height() const { return height_; }
     std::size_t bytes() const { return std::size_t(width_) * height_ * 16 * 2; }
 
 private:
