@@ -27,6 +27,7 @@ uniform float uConeOffset;   // start offset along the normal, in voxels
 uniform float uConeLift;     // extra offset along the normal per unit of cone diameter
 uniform float uMaxDistance;  // in voxels
 uniform int uUseBricks;
+uniform int uOnlyCone;  // diagnostic (`--only-cone`): only this cone gathers; −1: every cone
 uniform vec3 uVoxelOrigin;
 uniform float uVoxelScale;
 
@@ -278,6 +279,7 @@ vec4 gatherIrradiance(vec3 origin, vec3 normal, vec3 surfaceNormal) {
     orthonormalBasis(normal, tangent, bitangent);
     vec4 gathered = vec4(0.0);
     for (int c = 0; c < uConeCount; ++c) {
+        if (uOnlyCone >= 0 && c != uOnlyCone) continue;
         vec3 d = uConeDirection[c];
         vec3 direction = normalize(d.x * tangent + d.y * bitangent + d.z * normal);
         float tanHalfAngle = uConeTanHalfAngle[c];

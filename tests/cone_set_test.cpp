@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <vector>
 
 #include <glm/gtc/constants.hpp>
 
@@ -82,3 +83,39 @@ TEST(ConeSet, WeightsAndAperturesMatchTheirRegionsByNumericalIntegration) {
 }
 
 TEST(ConeSet, UnknownCountIsAClearError) { EXPECT_THROW(makeConeSet(7), Error); }
+
+// The regions of coneRegionOf are those the weights stand for: each cone's axis lies in its own
+// region, and of cosine-distributed directions each region holds 1/N (its weight over π).
+TEST(ConeSet, RegionsHoldTheirConesAndEqualShares) {
+    for (int count : {1, 5, 6, 9, 16}) {
+        const auto cones = makeConeSet(count);
+        for (int c = 0; c < count; ++c) EXPECT_EQ(coneRegionOf(count, cones[c].direction), c) << count << " cones";
+        std::vector<int> hits(count, 0);
+        const int n = 400;  // n × n stratified cosine-distributed directions
+        for (int i = 0; i < n; ++i)
+            for (int j = 0; j < n; ++j) {
+                const double u1 = (i + 0.5) / n, u2 = (j + 0.5) / n;
+                const double r = std::sqrt(u1), phi = 2.0 * glm::pi<double>() * u2;
+                const glm::vec3 local(float(r * std::cos(phi)), float(r * std::sin(phi)), float(std::sqrt(1.0 - u1)));
+                ++hits[coneRegionOf(count, local)];
+            }
+        for (int c = 0; c < count; ++c)
+            EXPECT_NEAR(double(hits[c]) / (double(n) * n), 1.0 / count, 0.002) << count << " cones, region " << c;
+    }
+}
+
+// The C++ tangent frame is the GPU's (shaders/math.glsl orthonormalBasis): orthonormal and
+// right-handed around the normal, continuous except at n.z = −1's sign switch.
+TEST(ConeSet, TangentFrameIsOrthonormalAroundTheNormal) {
+    for (const glm::vec3 n : {glm::vec3(0, 0, 1), glm::vec3(0, 0, -1), glm::vec3(1, 0, 0), glm::vec3(0, 1, 0),
+                              glm::normalize(glm::vec3(0.3f, -0.8f, 0.52f)), glm::normalize(glm::vec3(-0.1f, 0.2f, -0.97f))}) {
+        glm::vec3 t, b;
+        coneTangentFrame(n, t, b);
+        EXPECT_NEAR(glm::length(t), 1.0, 1e-5);
+        EXPECT_NEAR(glm::length(b), 1.0, 1e-5);
+        EXPECT_NEAR(glm::dot(t, n), 0.0, 1e-5);
+        EXPECT_NEAR(glm::dot(b, n), 0.0, 1e-5);
+        EXPECT_NEAR(glm::dot(t, b), 0.0, 1e-5);
+        EXPECT_NEAR(glm::dot(glm::cross(t, b), n), 1.0, 1e-5);
+    }
+}

@@ -2,6 +2,7 @@
 // physical units, colour bleeding in the Cornell box, determinism.
 #include <cmath>
 #include <fstream>
+#include <vector>
 
 #include <glm/gtc/constants.hpp>
 
@@ -278,4 +279,30 @@ TEST(Gi, SameCommandTwiceIsBitIdentical) {
     const ImageF b = renderCli(dir, "b", options);
     ASSERT_EQ(a.rgba.size(), b.rgba.size());
     EXPECT_TRUE(a.rgba == b.rgba);
+}
+
+// `--only-cone K` (the diagnostic partner of `vct reference --cone-region K`): each cone gathers
+// alone what it gathers in the whole set, so without the edge-aware filter (which clamps to its
+// taps' range, not linear) the five images add up to the whole set's irradiance.
+TEST(Gi, OnlyConeImagesAddUpToTheWholeSet) {
+    const auto dir = test::testDir();
+    const std::string common = "--scene cornell --width 48 --height 36 --voxel-levels 6 --gi-filter 0 --aov indirect";
+    const ImageF whole = renderCli(dir, "all", common);
+    std::vector<float> sum(whole.rgba.size(), 0.0f);
+    for (int cone = 0; cone < 5; ++cone) {
+        const ImageF part = renderCli(dir, "cone" + std::to_string(cone), common + " --only-cone " + std::to_string(cone));
+        for (std::size_t i = 0; i < sum.size(); ++i) sum[i] += part.rgba[i];
+    }
+    double worst = 0.0, largest = 0.0;
+    for (std::size_t i = 0; i < sum.size(); i += 4)
+        for (int c = 0; c < 3; ++c) {
+            worst = std::max(worst, double(std::abs(sum[i + c] - whole.rgba[i + c])));
+            largest = std::max(largest, double(whole.rgba[i + c]));
+        }
+    EXPECT_GT(largest, 0.0);
+    EXPECT_LT(worst, 1e-5 * largest) << "largest irradiance " << largest;
+    const auto bad = test::runVct("render -q --scene cornell --width 8 --height 8 --only-cone 5 --out " +
+                                  (dir / "x.png").string());
+    EXPECT_EQ(bad.exitCode, 1);
+    EXPECT_NE(bad.output.find("--only-cone 5 is not a cone of the 5-cone set"), std::string::npos) << bad.output;
 }

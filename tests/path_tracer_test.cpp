@@ -238,6 +238,37 @@ TEST(PathTracer, DirectPlusIndirectIsTheImageAndTimeLimitStops) {
     }
 }
 
+// `--cone-region K` keeps the light whose first bounce leaves in region K of the engine's cone
+// set: the regions partition the hemisphere, so with one seed the five images add up to the
+// whole indirect light, and each region holds light (the Cornell box is lit all around).
+TEST(PathTracer, ConeRegionsAddUpToTheIndirectLight) {
+    const auto dir = test::testDir();
+    const std::string common = "--scene cornell --width 32 --height 24 --spp 16 --bounces 1";
+    const ImageF whole = renderReference(common + " --indirect-out " + path(dir / "i.pfm"), dir / "all.pfm");
+    const ImageF indirect = readHdrImage(dir / "i.pfm");
+    ImageF sum = indirect;
+    std::fill(sum.rgba.begin(), sum.rgba.end(), 0.0f);
+    double total = 0.0;
+    for (int c = 0; c < 3; ++c) total += meanChannel(indirect, c);
+    for (int region = 0; region < 5; ++region) {
+        const auto out = dir / ("r" + std::to_string(region) + ".pfm");
+        renderReference(common + " --cones 5 --cone-region " + std::to_string(region) + " --indirect-out " + path(out),
+                        dir / "x.pfm");
+        const ImageF part = readHdrImage(out);
+        double share = 0.0;
+        for (int c = 0; c < 3; ++c) share += meanChannel(part, c);
+        std::printf("[ cone regions ] region %d: %.3f of the indirect light\n", region, share / total);
+        EXPECT_GT(share, 0.02 * total) << "region " << region;
+        for (std::size_t i = 0; i < sum.rgba.size(); ++i) sum.rgba[i] += part.rgba[i];
+    }
+    double worst = 0.0;
+    for (int y = 0; y < sum.height; ++y)
+        for (int x = 0; x < sum.width; ++x)
+            for (int c = 0; c < 3; ++c) worst = std::max(worst, double(std::abs(sum.at(x, y)[c] - indirect.at(x, y)[c])));
+    EXPECT_LT(worst, 1e-5) << "every first bounce lies in exactly one region";
+    EXPECT_GT(meanChannel(whole, 0), 0.0);
+}
+
 TEST(PathTracer, BadOptionsEndInOneClearError) {
     const auto dir = test::testDir();
     const std::pair<std::string, std::string> cases[] = {
@@ -249,6 +280,8 @@ TEST(PathTracer, BadOptionsEndInOneClearError) {
         {"--out " + path(dir / "x.png"), ".pfm or .exr"},
         {"--out " + path(dir / "missing" / "x.pfm"), "does not exist"},
         {"--tonemap filmic", "tone curve"},
+        {"--cone-region 5", "--cone-region"},
+        {"--cone-region 0 --cones 7", "--cones 7"},
     };
     for (const auto& [options, mentions] : cases) {
         std::string args = "reference --scene cornell --height 8 " + options;

@@ -94,6 +94,12 @@ Run addReferenceCommand(CLI::App& app) {
     command->add_option("--time-limit", s.timeLimitSeconds,
                         "seconds; stop after the sample pass that ends past it (0 = no limit)")
         ->capture_default_str();
+    command->add_option("--cone-region", s.coneRegion,
+                        "diagnostic: count only light whose first bounce leaves in region K of the engine's cone set "
+                        "(what vct render --only-cone K gathers); -1: every direction")
+        ->capture_default_str();
+    command->add_option("--cones", s.coneRegionSet, "the cone set whose regions --cone-region names: 1, 5, 6, 9 or 16")
+        ->capture_default_str();
     command->add_flag("--center-only", s.centerOnly,
                       "every sample through the pixel centre (no antialiasing), as the rasterizer samples");
     command->add_option("--exposure", o.exposureEV, "exposure in stops (EV) of --png; default: the scene's");

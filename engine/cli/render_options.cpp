@@ -38,6 +38,10 @@ void addRenderSettingsOptions(CLI::App& command, RenderSettingsOptions& o) {
     command.add_option("--cone-lift", o.cones.lift,
                        "extra offset along the normal per unit of cone diameter (against self-illumination)")
         ->capture_default_str();
+    command.add_option("--only-cone", o.cones.onlyCone,
+                       "diagnostic: only cone K of the set gathers light (0 = the cone along the normal; compare with "
+                       "vct reference --cone-region K); -1: every cone")
+        ->capture_default_str();
     command.add_option("--gi-resolution", o.giResolution,
                        "half: cones at one pixel of each 2x2 block, the others take the irradiance of traced "
                        "pixels on their own surface (about 4x fewer cones, as close to the path tracer); quarter: "

@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "reference/sampling.hpp"
+#include "render/cone_set.hpp"
 
 namespace vct::reference {
 namespace {
@@ -14,6 +15,13 @@ glm::vec3 facing(glm::vec3 n, glm::vec3 rayDirection) { return glm::dot(n, rayDi
 glm::vec3 onSideOf(glm::vec3 shading, glm::vec3 geometric) { return glm::dot(shading, geometric) < 0.0f ? -shading : shading; }
 
 }  // namespace
+
+bool PathTracer::inConeRegion(glm::vec3 normal, glm::vec3 direction) const {
+    glm::vec3 tangent, bitangent;
+    coneTangentFrame(normal, tangent, bitangent);
+    const glm::vec3 local(glm::dot(direction, tangent), glm::dot(direction, bitangent), glm::dot(direction, normal));
+    return coneRegionOf(coneRegion_.cones, local) == coneRegion_.region;
+}
 
 RadianceSample PathTracer::trace(const Ray& cameraRay, Pcg32& rng) const {
     RadianceSample result;
@@ -39,6 +47,7 @@ RadianceSample PathTracer::trace(const Ray& cameraRay, Pcg32& rng) const {
         }
         const float u1 = rng.uniform(), u2 = rng.uniform();
         const glm::vec3 direction = glm::normalize(sampleCosineHemisphere(normal, u1, u2));
+        if (bounce == 1 && coneRegion_.region >= 0 && !inConeRegion(normal, direction)) break;
         // Sampled around the shading normal, the direction may point into the triangle itself
         // (behind its geometric normal): a reflection cannot go there, the BRDF is 0 (pbrt's
         // "reflect" test). Continuing would carry light through closed walls.

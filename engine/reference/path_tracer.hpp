@@ -44,20 +44,32 @@ struct RadianceSample {
     bool hit = false;          // the camera ray hit geometry (false: sky, radiance 0)
 };
 
+// Which first bounces count (`vct reference --cone-region`): those that leave in one region of
+// the engine's cone set, in the engine's tangent frame around the shading normal; region −1: all.
+struct ConeRegionFilter {
+    int cones = 5;
+    int region = -1;
+};
+
 class PathTracer {
 public:
-    PathTracer(const RayScene& rays, const MaterialTable& materials, const DeltaLights& lights, int bounces)
-        : rays_(rays), materials_(materials), lights_(lights), bounces_(bounces) {}
+    PathTracer(const RayScene& rays, const MaterialTable& materials, const DeltaLights& lights, int bounces,
+               ConeRegionFilter coneRegion = {})
+        : rays_(rays), materials_(materials), lights_(lights), bounces_(bounces), coneRegion_(coneRegion) {}
 
     RadianceSample trace(const Ray& cameraRay, Pcg32& rng) const;
 
     static constexpr int kRouletteAfterBounce = 3;
 
 private:
+    bool inConeRegion(glm::vec3 normal, glm::vec3 direction) const;
+
+private:
     const RayScene& rays_;
     const MaterialTable& materials_;
     const DeltaLights& lights_;
     int bounces_;
+    ConeRegionFilter coneRegion_;
 };
 
 }  // namespace vct::reference

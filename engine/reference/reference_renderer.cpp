@@ -12,6 +12,7 @@
 #include "reference/delta_lights.hpp"
 #include "reference/materials.hpp"
 #include "reference/path_tracer.hpp"
+#include "render/cone_set.hpp"
 #include "reference/progress.hpp"
 #include "reference/ray_scene.hpp"
 
@@ -53,6 +54,14 @@ void validate(const ReferenceSettings& s) {
     if (s.threads < 0 || s.threads > 1024) fail("--threads ", s.threads, " is out of range; use 0 (all cores)..1024");
     if (!std::isfinite(s.timeLimitSeconds) || s.timeLimitSeconds < 0)
         fail("--time-limit must be a finite number of seconds ≥ 0 (0 = no limit)");
+    if (s.coneRegion >= 0) {
+        const int regions = int(makeConeSet(s.coneRegionSet).size());  // throws for an unknown set
+        if (s.coneRegion >= regions)
+            fail("--cone-region ", s.coneRegion, " is not a region of the ", s.coneRegionSet, "-cone set; use 0..",
+                 regions - 1);
+    } else if (s.coneRegion != -1) {
+        fail("--cone-region ", s.coneRegion, " is out of range; use -1 (every direction) or a cone of the set");
+    }
 }
 
 ReferenceResult renderReference(const Scene& scene, const Camera& camera, const ReferenceSettings& settings) {
@@ -61,7 +70,7 @@ ReferenceResult renderReference(const Scene& scene, const Camera& camera, const 
     const MaterialTable materials(scene);
     const RayScene rays(scene, materials);
     const DeltaLights lights(scene);
-    const PathTracer tracer(rays, materials, lights, settings.bounces);
+    const PathTracer tracer(rays, materials, lights, settings.bounces, {settings.coneRegionSet, settings.coneRegion});
     const CameraRays cameraRays(camera, scene, settings.width, settings.height);
 
     ReferenceResult result;

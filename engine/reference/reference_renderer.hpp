@@ -35,6 +35,10 @@ struct ReferenceSettings {
     double timeLimitSeconds = 0.0;      // 0 = none
     bool centerOnly = false;
     bool progress = true;               // progress on stderr
+    // Diagnostic: count only the light whose first bounce leaves in this region of the engine's
+    // cone set of `coneRegionSet` cones (render/cone_set.hpp coneRegionOf; −1: every direction).
+    int coneRegion = -1;
+    int coneRegionSet = 5;
 };
 
 struct ReferenceResult {

@@ -26,4 +26,14 @@ struct Cone {
 std::vector<Cone> makeConeSet(int count);  // throws for counts other than 1, 5, 6, 9, 16
 const char* coneSetNames();                // "1|5|6|9|16"
 
+// The index (in makeConeSet(count)'s order) of the region that holds the direction `local`
+// (tangent space, z ≥ 0): the cap or, in its ring, the sector of the nearest cone axis. The
+// light arriving in a cone's region is what that cone alone should gather (`vct reference
+// --cone-region`, `vct render --only-cone`: which cones are right, and where).
+int coneRegionOf(int count, glm::vec3 local);
+
+// The tangent frame the cones are laid out in around the unit normal n (Duff et al. 2017): the
+// same formula as orthonormalBasis in shaders/math.glsl, which the GPU passes use.
+void coneTangentFrame(glm::vec3 n, glm::vec3& tangent, glm::vec3& bitangent);
+
 }  // namespace vct

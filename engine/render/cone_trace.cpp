@@ -88,6 +88,9 @@ void validateConeSettings(const ConeSettings& s) {
         fail("--cone-offset ", s.offset, " is out of range; use 0..16 voxels");
     if (!(s.lift >= 0.0f && s.lift <= 4.0f))
         fail("--cone-lift ", s.lift, " is out of range; use 0..4 (normal offset per unit of cone diameter)");
+    if (s.onlyCone < -1 || s.onlyCone >= s.cones)
+        fail("--only-cone ", s.onlyCone, " is not a cone of the ", s.cones, "-cone set; use 0..", s.cones - 1,
+             " (0 is the cone along the normal)");
     if (!(s.maxDistance >= 0.0f) || !std::isfinite(s.maxDistance))
         fail("cone maximum distance ", s.maxDistance, " must be a finite number ≥ 0 (0: the whole volume)");
 }
@@ -118,6 +121,7 @@ void setConeMarchUniforms(gl::ComputeCall& call, const Octree& octree, const Rad
         .uniform("uConeLift", settings.lift)
         .uniform("uMaxDistance", settings.maxDistance > 0.0f ? settings.maxDistance : diagonal)
         .uniform("uUseBricks", settings.bricks ? 1 : 0)
+        .uniform("uOnlyCone", settings.onlyCone)
         .uniform("uVoxelOrigin", glm::vec3(octree.grid.localMin))
         .uniform("uVoxelScale", float(1.0 / octree.grid.voxelSize));
 }

@@ -22,6 +22,7 @@ struct ConeSettings {
     float lift = 0.0f;          // extra normal offset per unit of cone diameter
     float maxDistance = 0.0f;   // voxels; 0 = through the whole volume
     bool bricks = true;         // false: the nearest brick sample, no interpolation (`--no-bricks`)
+    int onlyCone = -1;          // diagnostic: only this cone of the set gathers (`--only-cone`); −1: all
 
     bool operator==(const ConeSettings&) const = default;
 };
