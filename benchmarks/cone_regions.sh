@@ -7,12 +7,7 @@
 # normal) on walls and on ceilings. An image mean can be right while its cones are not.
 #   bash benchmarks/cone_regions.sh          (about 10 minutes on llvmpipe)
 # Writes benchmarks/results/cone_regions_<renderer>.md. Sponza comes from the asset search path.
-set -euo pipefail
-cd "$(dirname "$0")/.."
-bash .ci/setup >/dev/null
-out=benchmarks/results
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
+source "$(dirname "$0")/scratch_setup.sh"
 views=("cornell|--scene cornell --width 320 --height 240"
        "CameraMain|--scene sponza --camera CameraMain --width 320 --height 180"
        "CameraAlternate|--scene sponza --camera CameraAlternate --width 320 --height 180"

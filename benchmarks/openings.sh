@@ -8,12 +8,7 @@
 # geometry whose answer is easy to reason about.
 #   bash benchmarks/openings.sh          (about a minute on llvmpipe)
 # Writes benchmarks/results/openings_<renderer>.md.
-set -euo pipefail
-cd "$(dirname "$0")/.."
-bash .ci/setup >/dev/null
-out=benchmarks/results
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
+source "$(dirname "$0")/scratch_setup.sh"
 view=(--sun-dir 0,-1,0.05 --sun-irradiance 10 --eye 4.3,2,0 --target 8,1.5,0 --fov 70 --width 320 --height 180)
 for scene in two_rooms_opening two_rooms_no_wall; do
   echo "openings: $scene, reference..." >&2
