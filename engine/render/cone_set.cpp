@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <span>
 
 
 #include "core/error.hpp"
@@ -13,14 +14,16 @@ const char* coneSetNames() { return "1|5|6|9|16"; }
 
 namespace {
 
-// Cones per ring after the cap.
-std::vector<int> ringsOf(int count) {
+// Cones per ring after the cap. Static tables: coneRegionOf runs for every path-traced sample
+// of `vct reference --cone-region`.
+std::span<const int> ringsOf(int count) {
+    static constexpr int kFour[] = {4}, kFive[] = {5}, kEight[] = {8}, kFiveTen[] = {5, 10};
     switch (count) {
         case 1: return {};
-        case 5: return {4};
-        case 6: return {5};
-        case 9: return {8};
-        case 16: return {5, 10};
+        case 5: return kFour;
+        case 6: return kFive;
+        case 9: return kEight;
+        case 16: return kFiveTen;
         default: fail("--cones ", count, " is not a cone set; use one of ", coneSetNames());
     }
 }
@@ -31,7 +34,7 @@ double coneAzimuth(int j, int ring, int m) { return (j + 0.5 * double(ring)) * 2
 }  // namespace
 
 std::vector<Cone> makeConeSet(int count) {
-    const std::vector<int> rings = ringsOf(count);
+    const std::span<const int> rings = ringsOf(count);
     const double share = 1.0 / count;  // of the cosine-weighted hemisphere, per cone
     std::vector<Cone> cones;
     // The cap: sin²θ ∈ [0, 1/N] (the whole hemisphere for N = 1).
@@ -57,7 +60,7 @@ std::vector<Cone> makeConeSet(int count) {
 }
 
 int coneRegionOf(int count, glm::vec3 local) {
-    const std::vector<int> rings = ringsOf(count);
+    const std::span<const int> rings = ringsOf(count);
     const double length2 = double(glm::dot(local, local));
     const double z = length2 > 0.0 ? double(local.z) / std::sqrt(length2) : 1.0;
     const double sin2 = std::max(0.0, 1.0 - z * z);
