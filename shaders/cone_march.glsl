@@ -28,6 +28,13 @@ uniform float uConeLift;     // extra offset along the normal per unit of cone d
 uniform float uMaxDistance;  // in voxels
 uniform int uUseBricks;
 uniform int uOnlyCone;  // diagnostic (`--only-cone`): only this cone gathers; −1: every cone
+// Narrow cones (`--cone-rays`): uRayCount cones of half-angle atan(uRayTanHalfAngle), spread over
+// the hemisphere anew at every apex, instead of the cone set; 0: the cone set.
+uniform int uRayCount;
+uniform float uRayTanHalfAngle;
+// The narrow cones [uRayFirst, uRayEnd) of the uRayCount: a dispatch traces a few of them
+// (cone_trace.cpp, kNarrowConesPerDispatch), each adding its part to what the ones before stored.
+uniform int uRayFirst, uRayEnd;
 uniform vec3 uVoxelOrigin;
 uniform float uVoxelScale;
 
@@ -35,6 +42,18 @@ uniform float uVoxelScale;
 // (cone_spread.glsl).
 vec3 coneAxis;
 vec3 coneAlongPlus, coneAlongMinus;
+
+// Whether a sample in an empty node also reads ahead across the cone (sampleLevel). A narrow cone
+// passing low over a floor sees it only across its axis; when the floor lies at the top of its
+// node, the cone's samples just above it stand in the empty node above, and without these reads
+// the cone passes over the floor and through it without meeting it (Sponza's courtyard floor is
+// such a floor at 256³). A wide cone's reads across it from an empty node reach far beyond its
+// footprint: the cone set keeps reading only along its axis there (reading across too was
+// measured to brighten the cones that look across a floor, already too bright:
+// docs/benchmark.md, "Narrow cones instead of the cone set").
+bool readsAcrossEmptyNodes() { return uRayCount > 0; }
+// Shares of a narrow cone's travel below this are the far tails of its spread: not read there.
+const float NEGLIGIBLE_SHARE = 1e-3;
 
 // Directions at more than 60° from the cone's axis are read one level finer (sampleLevel). Of the
 // thresholds measured on Cornell and the four Sponza views together (30°, 45°, 60°, 73°), 60°
@@ -119,15 +138,16 @@ vec4 sampleLevel(uint node, int level, uint finer, vec3 p, uvec3 cell, uint know
         bool lateral = (along ? coneAxis[a] : -coneAxis[a]) < LATERAL_ALIGNMENT;
         vec3 at;
         uint holder = NONE;
+        float weight = along ? coneAlongPlus[a] : coneAlongMinus[a];
         if (node == NONE) {
-            if (!lateral) holder = slabAheadOfEmpty(level, p, cell, known, knownLevel, i, at);
+            if (!lateral || (readsAcrossEmptyNodes() && weight > NEGLIGIBLE_SHARE))
+                holder = slabAheadOfEmpty(level, p, cell, known, knownLevel, i, at);
         } else {
             bool fromFiner = lateral && finer != NONE;
             float ahead = lateral && !fromFiner && level + 1 < uLevels ? 0.5 : 1.0;
             holder = slabAhead(fromFiner ? finer : node, fromFiner ? inFiner : inNode, i, ahead, at);
         }
         if (holder == NONE) continue;  // empty space ahead
-        float weight = along ? coneAlongPlus[a] : coneAlongMinus[a];
         vec3 sampleAt = uUseBricks != 0 ? at : round(at);
         value += weight * texture(uDirectional, (vec3(directionalBrickOrigin(holder, i)) + 0.5 + sampleAt) / poolSize);
     }
@@ -156,11 +176,17 @@ int coarseLevelFor(float lod) {
 
 // Whether every read of a sample at p whose coarser level is coarseLevel stays inside the empty
 // node [lo, lo + size]³: then it sees nothing and can be skipped. The reads ahead go half that
-// level's node edge along the axes within 60° of the cone's axis (sampleLevel).
+// level's node edge along the axes within 60° of the cone's axis (sampleLevel), and with
+// readsAcrossEmptyNodes along every direction the cone travels at all.
 bool readsStayInside(vec3 p, int coarseLevel, vec3 lo, float size) {
     float reach = 0.5 * float(1 << (uLevels - coarseLevel));
     bool inside = true;
     for (int a = 0; a < 3; ++a) {
+        if (readsAcrossEmptyNodes()) {
+            if (coneAlongPlus[a] > NEGLIGIBLE_SHARE && p[a] + reach >= lo[a] + size) inside = false;
+            if (coneAlongMinus[a] > NEGLIGIBLE_SHARE && p[a] - reach < lo[a]) inside = false;
+            continue;
+        }
         float ahead = p[a] + (coneAxis[a] > 0.0 ? reach : -reach);
         if (abs(coneAxis[a]) >= LATERAL_ALIGNMENT && (ahead < lo[a] || ahead >= lo[a] + size)) inside = false;
     }
@@ -268,6 +294,46 @@ float coneShareAbove(vec3 direction, float tanHalfAngle, vec3 n) {
     return clamp(0.5 + 0.5 * elevation / atan(tanHalfAngle), 0.0, 1.0);
 }
 
+// Two numbers in [0, 1) from the bits of a point: the same point always gives the same pair, so
+// frames stay deterministic, and neighbouring apices get unrelated ones.
+vec2 hashToUnitSquare(vec3 p) {
+    uvec3 b = floatBitsToUint(p);
+    uint h = b.x * 73856093u ^ b.y * 19349663u ^ b.z * 83492791u;
+    h ^= h >> 16; h *= 0x7feb352du; h ^= h >> 15; h *= 0x846ca68bu; h ^= h >> 16;
+    return vec2(float(h & 0xffffu), float(h >> 16)) / 65536.0;
+}
+
+// Narrow cones instead of the cone set (`--cone-rays`): uRayCount cones, each of weight π/N,
+// whose axes sample the cosine-weighted hemisphere (sin²θ and azimuth uniform) on a Fibonacci
+// lattice, k/N against k/φ, shifted by an amount that changes from apex to apex. A cone a few
+// voxels wide keeps its samples on fine levels, where a sample's opacity and light are the
+// geometry's own, so occlusion and light arrive from where the path tracer finds them; the noise
+// of N directions per pixel is what the upsampling and the edge-aware filter average out across
+// the surface. The share of a cone behind the triangle's plane is blocked by it, as in the cone set.
+vec4 gatherNarrowCones(vec3 origin, vec3 normal, vec3 surfaceNormal) {
+    vec3 tangent, bitangent;
+    orthonormalBasis(normal, tangent, bitangent);
+    const vec2 shift = hashToUnitSquare(origin);
+    const float count = float(uRayCount);
+    const float goldenFraction = 0.61803398875;  // 1/φ
+    vec4 gathered = vec4(0.0);
+    for (int k = uRayFirst; k < uRayEnd; ++k) {
+        float sin2 = fract((float(k) + 0.5) / count + shift.x);
+        float azimuth = 2.0 * PI * fract(float(k) * goldenFraction + shift.y);
+        float sinTheta = sqrt(sin2);
+        vec3 d = vec3(sinTheta * cos(azimuth), sinTheta * sin(azimuth), sqrt(max(1.0 - sin2, 0.0)));
+        vec3 direction = normalize(d.x * tangent + d.y * bitangent + d.z * normal);
+        vec4 cone = vec4(0.0, 0.0, 0.0, 1.0);
+        if (dot(direction, surfaceNormal) > 0.0) {
+            coneAxis = direction;
+            coneSpread(direction, uRayTanHalfAngle, coneAlongPlus, coneAlongMinus);
+            cone = traceCone(origin, normal, direction, uRayTanHalfAngle);
+        }
+        gathered += (PI / count) * cone;
+    }
+    return gathered;
+}
+
 // The cone set around `normal` from `origin` (voxel space): irradiance E (rgb) and the occlusion
 // Σ weight·opacity (a; π when every cone is blocked). `surfaceNormal` is the surface's own side
 // (a triangle's geometric normal; `normal` itself where there is none): light cannot arrive from
@@ -275,6 +341,7 @@ float coneShareAbove(vec3 direction, float tanHalfAngle, vec3 n) {
 // it has in front of that plane beyond the share it has in front of its own (which the cone set's
 // weights already account for: on a flat surface every cone keeps its whole weight).
 vec4 gatherIrradiance(vec3 origin, vec3 normal, vec3 surfaceNormal) {
+    if (uRayCount > 0) return gatherNarrowCones(origin, normal, surfaceNormal);
     vec3 tangent, bitangent;
     orthonormalBasis(normal, tangent, bitangent);
     vec4 gathered = vec4(0.0);

@@ -14,7 +14,6 @@ layout(local_size_x = 8, local_size_y = 8) in;
 
 layout(binding = TEXTURE_GBUFFER_NORMAL) uniform sampler2D uNormal;
 layout(binding = TEXTURE_GBUFFER_POSITION) uniform sampler2D uPosition;
-layout(rgba32f, binding = IMAGE_INDIRECT) uniform writeonly image2D uIndirect;
 layout(r32ui, binding = IMAGE_TRACED_PIXEL) uniform writeonly uimage2D uTracedPixel;
 
 uniform int uDownscale;
@@ -53,10 +52,10 @@ void main() {
         imageStore(uIndirect, cell, vec4(0.0, 0.0, 0.0, 1.0));
         if (uDownscale > 1)
             imageStore(uTracedPixel, cell, uvec4(NO_TRACED_PIXEL));
-        else
+        else if (!continuesTrace())
             count64(CONE_COUNTER_SKY_PIXELS, 1u);
         return;
     }
-    imageStore(uIndirect, cell, tracePixel(pixel, position.xyz, normalize(texelFetch(uNormal, pixel, 0).xyz)));
+    storeTraced(cell, tracePixel(pixel, position.xyz, normalize(texelFetch(uNormal, pixel, 0).xyz)));
     if (uDownscale > 1) imageStore(uTracedPixel, cell, uvec4(packTracedPixel(pixel)));
 }

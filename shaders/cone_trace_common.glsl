@@ -20,16 +20,29 @@ void count64(uint index, uint value) {
 }
 
 layout(binding = TEXTURE_GBUFFER_GEOMETRIC_NORMAL) uniform sampler2D uGeometricNormal;
+// Where the traced irradiance goes: the indirect image, or the traced blocks' image.
+layout(rgba32f, binding = IMAGE_INDIRECT) uniform image2D uIndirect;
+
+// Whether this dispatch continues what earlier ones traced for the same pixels (narrow cones
+// traced a few per dispatch: cone_march.glsl, uRayFirst).
+bool continuesTrace() { return uRayFirst > 0; }
+
+// Stores what tracePixel returned for `at`, added to what the dispatches before stored there.
+void storeTraced(ivec2 at, vec4 traced) {
+    imageStore(uIndirect, at, continuesTrace() ? imageLoad(uIndirect, at) + traced : traced);
+}
 
 // The cone set traced from the surface point of `pixel` (scene-local position, unit normal facing
 // the camera): indirect irradiance E (rgb) and ambient visibility (a: 1 = nothing in the way),
 // counted as one traced pixel with its samples. No light arrives from behind the pixel's triangle
-// (gatherIrradiance), however far smooth shading leans the normal from it.
+// (gatherIrradiance), however far smooth shading leans the normal from it. A dispatch that
+// continues the trace returns its part: the irradiance its cones add and the visibility they take
+// away (storeTraced adds it).
 vec4 tracePixel(ivec2 pixel, vec3 position, vec3 normal) {
     const vec3 origin = (position - uVoxelOrigin) * uVoxelScale + normal * uConeOffset;
     const vec4 gathered = gatherIrradiance(origin, normal, texelFetch(uGeometricNormal, pixel, 0).xyz);
     count64(CONE_COUNTER_SAMPLES, samplesTaken);
     count64(CONE_COUNTER_SAMPLES_SAVED, samplesSaved);
-    count64(CONE_COUNTER_TRACED_PIXELS, 1u);
-    return vec4(gathered.rgb, 1.0 - gathered.a / PI);
+    if (!continuesTrace()) count64(CONE_COUNTER_TRACED_PIXELS, 1u);
+    return vec4(gathered.rgb, (continuesTrace() ? 0.0 : 1.0) - gathered.a / PI);
 }

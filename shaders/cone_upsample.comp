@@ -20,7 +20,6 @@ layout(binding = TEXTURE_GBUFFER_NORMAL) uniform sampler2D uNormal;
 layout(binding = TEXTURE_GBUFFER_POSITION) uniform sampler2D uPosition;
 layout(binding = TEXTURE_TRACED_IRRADIANCE) uniform sampler2D uTraced;
 layout(binding = TEXTURE_TRACED_PIXEL) uniform usampler2D uTracedPixel;
-layout(rgba32f, binding = IMAGE_INDIRECT) uniform writeonly image2D uIndirect;
 
 uniform int uDownscale;  // pixels per side of a traced block: 2 or 4
 
@@ -33,7 +32,7 @@ void main() {
     if (listed >= coneCounters[CONE_COUNTER_OWN_TRACES]) return;
     const ivec2 pixel = unpackTracedPixel(ownTracePixels[listed]);
     const vec3 position = texelFetch(uPosition, pixel, 0).xyz;
-    imageStore(uIndirect, pixel, tracePixel(pixel, position, normalize(texelFetch(uNormal, pixel, 0).xyz)));
+    storeTraced(pixel, tracePixel(pixel, position, normalize(texelFetch(uNormal, pixel, 0).xyz)));
 }
 #else
 

@@ -81,7 +81,7 @@ const std::vector<std::string>& parameterNames() {
     static const std::vector<std::string> names = {"voxel_levels", "cones",          "cone_aperture", "cone_step",
                                                    "cone_offset",  "cone_lift",      "bricks",        "light_view_res",
                                                    "pcf_radius",   "gi",             "bounces",       "samples",
-                                                   "gi_resolution", "shadow_res",    "gi_filter"};
+                                                   "gi_resolution", "shadow_res",    "gi_filter",     "cone_rays"};
     return names;
 }
 
@@ -93,6 +93,9 @@ void applyParameter(PointSettings& s, const std::string& name, const Json& v) {
         const int n = integer(v, what, 1, 16);
         if (n != 1 && n != 5 && n != 6 && n != 9 && n != 16) fail(what, " ", n, " is not a cone set; use 1, 5, 6, 9 or 16");
         s.cones.cones = n;
+    } else if (name == "cone_rays") {
+        s.cones.rays = integer(v, what, 0, 64);
+        validateConeSettings(s.cones);
     } else if (name == "cone_aperture") {
         s.cones.apertureScale = float(number(v, what, 1e-3, 4.0));
     } else if (name == "cone_step") {
@@ -136,6 +139,7 @@ void applyParameter(PointSettings& s, const std::string& name, const Json& v) {
 std::string parameterValue(const PointSettings& s, const std::string& name) {
     if (name == "voxel_levels") return std::to_string(s.voxelLevels);
     if (name == "cones") return std::to_string(s.cones.cones);
+    if (name == "cone_rays") return std::to_string(s.cones.rays);
     if (name == "cone_aperture") return formatNumber(s.cones.apertureScale);
     if (name == "cone_step") return formatNumber(s.cones.step);
     if (name == "cone_offset") return formatNumber(s.cones.offset);

@@ -25,7 +25,8 @@
 // against a reference with as many bounces), samples (pixel samples each image averages, as
 // `vct render --samples`; the point's times are those of all its samples together),
 // gi_resolution ("auto", "full", "half" or "quarter", `--gi-resolution`), shadow_res
-// (`--shadow-res`), gi_filter (`--gi-filter`, voxels; 0: off).
+// (`--shadow-res`), gi_filter (`--gi-filter`, voxels; 0: off), cone_rays (`--cone-rays`; 0: the
+// cone set).
 #include <cstdint>
 #include <filesystem>
 #include <optional>

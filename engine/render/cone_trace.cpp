@@ -88,6 +88,10 @@ void validateConeSettings(const ConeSettings& s) {
         fail("--cone-offset ", s.offset, " is out of range; use 0..16 voxels");
     if (!(s.lift >= 0.0f && s.lift <= 4.0f))
         fail("--cone-lift ", s.lift, " is out of range; use 0..4 (normal offset per unit of cone diameter)");
+    if (s.rays < 0 || s.rays > kMaxNarrowCones)
+        fail("--cone-rays ", s.rays, " is out of range; use 1..", kMaxNarrowCones, " narrow cones (0: the cone set)");
+    if (s.rays != 0 && s.onlyCone != -1)
+        fail("--only-cone picks a cone of the cone set; it cannot be combined with --cone-rays");
     if (s.onlyCone < -1 || s.onlyCone >= s.cones)
         fail("--only-cone ", s.onlyCone, " is not a cone of the ", s.cones, "-cone set; use 0..", s.cones - 1,
              " (0 is the cone along the normal)");
@@ -122,6 +126,10 @@ void setConeMarchUniforms(gl::ComputeCall& call, const Octree& octree, const Rad
         .uniform("uMaxDistance", settings.maxDistance > 0.0f ? settings.maxDistance : diagonal)
         .uniform("uUseBricks", settings.bricks ? 1 : 0)
         .uniform("uOnlyCone", settings.onlyCone)
+        .uniform("uRayCount", settings.rays)
+        .uniform("uRayFirst", 0)
+        .uniform("uRayEnd", settings.rays)
+        .uniform("uRayTanHalfAngle", kNarrowConeTan * settings.apertureScale)
         .uniform("uVoxelOrigin", glm::vec3(octree.grid.localMin))
         .uniform("uVoxelScale", float(1.0 / octree.grid.voxelSize));
 }
@@ -156,11 +164,22 @@ void ConeTrace::render(const GBuffer& gbuffer, const Octree& octree, const Radia
             .uniform("uDownscale", block);
         return call;
     };
-    tracingCall(program_)
-        .image(gl::IMAGE_INDIRECT, inBlocks ? traced_.id() : indirect_.id(), GL_WRITE_ONLY, GL_RGBA32F)
-        .image(gl::IMAGE_TRACED_PIXEL, inBlocks ? tracedPixel_.id() : 0, GL_WRITE_ONLY, GL_R32UI)
-        .uniform("uRotation", rotation & (block * block - 1))
-        .dispatchImage(tracedWidth, tracedHeight, GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+    // Narrow cones go a few per dispatch (kNarrowConesPerDispatch), each dispatch adding to what
+    // the ones before stored; the cone set in one.
+    const int rayBatches = settings.rays > 0 ? (settings.rays + kNarrowConesPerDispatch - 1) / kNarrowConesPerDispatch : 1;
+    auto selectBatch = [&](gl::ComputeCall& call, int batch) {
+        if (settings.rays > 0)
+            call.uniform("uRayFirst", batch * kNarrowConesPerDispatch)
+                .uniform("uRayEnd", std::min((batch + 1) * kNarrowConesPerDispatch, settings.rays));
+    };
+    for (int batch = 0; batch < rayBatches; ++batch) {
+        gl::ComputeCall call = tracingCall(program_);
+        selectBatch(call, batch);
+        call.image(gl::IMAGE_INDIRECT, inBlocks ? traced_.id() : indirect_.id(), GL_READ_WRITE, GL_RGBA32F)
+            .image(gl::IMAGE_TRACED_PIXEL, inBlocks ? tracedPixel_.id() : 0, GL_WRITE_ONLY, GL_R32UI)
+            .uniform("uRotation", rotation & (block * block - 1))
+            .dispatchImage(tracedWidth, tracedHeight, GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+    }
     // The filter runs on the traced image; a different image size (another GI resolution) makes
     // a new one.
     GLuint traced = inBlocks ? traced_.id() : indirect_.id();
@@ -177,13 +196,17 @@ void ConeTrace::render(const GBuffer& gbuffer, const Octree& octree, const Radia
             call.texture(gl::TEXTURE_TRACED_IRRADIANCE, traced)
                 .texture(gl::TEXTURE_TRACED_PIXEL, tracedPixel_.id())
                 .storage(gl::SSBO_OWN_TRACE_PIXELS, ownTracePixels_)
-                .image(gl::IMAGE_INDIRECT, indirect_.id(), GL_WRITE_ONLY, GL_RGBA32F);
+                .image(gl::IMAGE_INDIRECT, indirect_.id(), GL_READ_WRITE, GL_RGBA32F);
             return call;
         };
         upsampleCall(upsampleProgram_)
             .dispatchImage(width_, height_, GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
-        listDispatch_.dispatch(upsampleCall(traceListedProgram_), counters_, kOwnTraceCountSlot, dispatchArgs_, 0,
-                               GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+        for (int batch = 0; batch < rayBatches; ++batch) {
+            gl::ComputeCall call = upsampleCall(traceListedProgram_);
+            selectBatch(call, batch);
+            listDispatch_.dispatch(call, counters_, kOwnTraceCountSlot, dispatchArgs_, 0,
+                                   GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+        }
     }
     gl::checkErrors("tracing cones");
 }

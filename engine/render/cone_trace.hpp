@@ -14,6 +14,18 @@
 
 namespace vct {
 
+// tan of a narrow cone's half-angle (`--cone-rays`): about 1.7°, a voxel wide 17 voxels out. Of the
+// apertures measured (tan 0.03, 0.06, 0.12; docs/benchmark.md, "Narrow cones") the narrowest came
+// closest to the path tracer in RMSE on every view.
+constexpr float kNarrowConeTan = 0.03f;
+constexpr int kMaxNarrowCones = 64;
+constexpr int kDefaultNarrowCones = 16;  // what the viewer's key turns on
+// Narrow cones traced per dispatch, each dispatch adding to the last. llvmpipe ends every loop of
+// a shader invocation once all of them together have run 65535 iterations (gallivm's
+// LP_MAX_TGSI_LOOP_ITERATIONS, shared by every loop), silently: a pixel's sixteen narrow cones
+// in one invocation lost the light of those past the first fifteen or so. Four stay well inside.
+constexpr int kNarrowConesPerDispatch = 4;
+
 struct ConeSettings {
     int cones = 5;              // 1, 5, 6, 9 or 16 (cone_set.hpp)
     float apertureScale = 1.0f; // multiplies the derived half-angles (tan), for the benchmark sweep
@@ -23,6 +35,10 @@ struct ConeSettings {
     float maxDistance = 0.0f;   // voxels; 0 = through the whole volume
     bool bricks = true;         // false: the nearest brick sample, no interpolation (`--no-bricks`)
     int onlyCone = -1;          // diagnostic: only this cone of the set gathers (`--only-cone`); −1: all
+    // Narrow cones instead of the cone set (`--cone-rays`): this many (1..kMaxNarrowCones) of
+    // half-angle atan(kNarrowConeTan × apertureScale), their axes spread anew at every pixel; 0: the
+    // cone set.
+    int rays = 0;
 
     bool operator==(const ConeSettings&) const = default;
 };
