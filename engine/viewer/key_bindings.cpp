@@ -22,6 +22,7 @@ const Binding kBindings[] = {
     {{GLFW_KEY_P, 0}, Action::TogglePhotons},
     {{GLFW_KEY_N, 0}, Action::NextBounceCount},
     {{GLFW_KEY_H, 0}, Action::ToggleGiResolution},
+    {{GLFW_KEY_C, 0}, Action::ToggleNarrowCones},
     {{GLFW_KEY_V, 0}, Action::ToggleVoxelView},
     {{GLFW_KEY_V, GLFW_MOD_SHIFT}, Action::ToggleRadianceView},
     {{GLFW_KEY_LEFT_BRACKET, 0}, Action::CoarserLevel},
@@ -148,6 +149,7 @@ const std::string& keyHelp() {
         "  P            photon injection on/off\n"
         "  N            light bounces: 1, 2, ... 8, then 1 (one bounce is the default)\n"
         "  H            GI resolution: cones at every pixel / at one pixel of each 2x2 block\n"
+        "  C            the cone set / 16 narrow cones per pixel (closer to the path tracer, slower)\n"
         "  V            voxel view (octree albedo) on/off;  Shift+V: radiance view\n"
         "  [ ]          voxel views: coarser / finer octree level\n"
         "  1..6         output: final, direct, indirect, ao, albedo, normal\n"

@@ -186,6 +186,10 @@ private:
                 s.giResolution = nextGiResolution(s.giResolution);
                 status(std::string("GI resolution ") + giResolutionName(s.giResolution));
                 break;
+            case Action::ToggleNarrowCones:
+                s.cones.rays = s.cones.rays > 0 ? 0 : kDefaultNarrowCones;
+                status(s.cones.rays > 0 ? concat(s.cones.rays, " narrow cones per pixel") : concat(s.cones.cones, "-cone set"));
+                break;
             case Action::ToggleVoxelView:
                 s.view = s.view == ViewMode::Voxels ? ViewMode::Lit : ViewMode::Voxels;
                 status(s.view == ViewMode::Voxels ? concat("voxel view, level ", shownLevel) : std::string("lit view"));
