@@ -160,7 +160,7 @@ const std::string& keyHelp() {
 
 const std::string& keyHelpLine() {
     static const std::string line =
-        "WASD/RF move, drag look, wheel speed, Home reset | G gi, B bricks, P photons, N bounces, H GI res, V voxels, Shift+V radiance, "
+        "WASD/RF move, drag look, wheel speed, Home reset | G gi, B bricks, P photons, N bounces, H GI res, C narrow cones, V voxels, Shift+V radiance, "
         "[ ] level | 1-6 final/direct/indirect/ao/albedo/normal | arrows sun | F1 panel, F12 screenshot, Esc quit";
     return line;
 }
