@@ -194,7 +194,7 @@ bool readsStayInside(vec3 p, int coarseLevel, vec3 lo, float size) {
 }
 
 // Radiance at p (voxel space) for a footprint of 2^lod voxels: the two nearest levels
-// (sampleLevel), linear between them. Returns false when p lies in an empty node of the coarser
+// (sampleLevel), linear between them (narrow cones: the nearer one). Returns false when p lies in an empty node of the coarser
 // level whose reads stay inside it, with the node (emptyLo, emptyLevel) and tSkip where the ray
 // leaves it.
 bool sampleRadiance(vec3 p, float lod, vec3 origin, vec3 invDirection, out vec4 value, out float tSkip,
@@ -232,6 +232,14 @@ bool sampleRadiance(vec3 p, float lod, vec3 origin, vec3 invDirection, out vec4 
     uint nodes[2] = uint[2](fineNode, coarseNode);
     uint finerNodes[2] = uint[2](finerNode, fineLevel == coarseLevel ? finerNode : fineNode);
     int levels[2] = int[2](fineLevel, coarseLevel);
+    // A narrow cone reads only the level nearer its footprint: the blend of two levels hides the
+    // seams where a wide cone's samples change level, which narrow cones, whose directions change
+    // from pixel to pixel, average out anyway; one level halves their lookups.
+    if (uRayCount > 0) {
+        const int k = fineLevel == coarseLevel || blend >= 0.5 ? 1 : 0;
+        value = sampleLevel(nodes[k], levels[k], finerNodes[k], p, cell, node, level - 1);
+        return true;
+    }
     vec4 samples[2];
     for (int k = 0; k < 2; ++k) samples[k] = sampleLevel(nodes[k], levels[k], finerNodes[k], p, cell, node, level - 1);
     value = fineLevel == coarseLevel ? samples[1] : mix(samples[0], samples[1], blend);
