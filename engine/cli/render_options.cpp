@@ -40,7 +40,7 @@ void addRenderSettingsOptions(CLI::App& command, RenderSettingsOptions& o) {
         ->capture_default_str();
     command.add_option("--cone-rays", o.cones.rays,
                        "narrow cones per traced pixel instead of the cone set (1..64; 0: the cone set): "
-                       "closer to the path tracer, about 15x the cone-tracing time at 16")
+                       "closer to the path tracer, about 16x the cone-tracing time at 16")
         ->capture_default_str();
     command.add_option("--only-cone", o.cones.onlyCone,
                        "diagnostic: only cone K of the set gathers light (0 = the cone along the normal; compare with "
