@@ -30,6 +30,8 @@ names=()
 for entry in "${views[@]}"; do names+=("${entry%%|*}"); done
 /usr/bin/python3 - "$work" "$out" "${names[@]}" <<'PY'
 import array, datetime, json, math, sys
+sys.path.insert(0, "benchmarks")
+from report import renderer_of, write_report
 work, out, names = sys.argv[1], sys.argv[2], sys.argv[3:]
 
 def read_pfm(path):
@@ -85,8 +87,7 @@ for name in names:
     engine_total = sum(e for e, _ in sums.values())
     rows.append(f"| {name} | {engine_total / total:.2f} | " + " | ".join(cells) + " |")
 
-renderer = json.load(open(f"{work}/timings.json"))["renderer"]
-tag = "llvmpipe" if "llvmpipe" in renderer else renderer.split()[0].lower()
+renderer, tag = renderer_of(f"{work}/timings.json")
 lines = ["# Each cone's light against the path tracer's in its region", "",
          f"Renderer: {renderer}, measured {datetime.date.today()} by `bash benchmarks/cone_regions.sh`. "
          "Default settings (5 cones), 256³ voxels; `vct render --only-cone K` (final − direct) against `vct reference "
@@ -95,8 +96,5 @@ lines = ["# Each cone's light against the path tracer's in its region", "",
          "along the normal) on walls, ceilings and floors. Each cell: engine / reference (the group's share of the "
          "reference's indirect light).", "",
          "| view | all | " + " | ".join(groups) + " |", "|---|---|" + "---|" * len(groups)] + rows
-path = f"{out}/cone_regions_{tag}.md"
-open(path, "w").write("\n".join(lines) + "\n")
-print("\n".join(lines))
-print(f"wrote {path}", file=sys.stderr)
+write_report(f"{out}/cone_regions_{tag}.md", lines)
 PY

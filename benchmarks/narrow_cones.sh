@@ -36,6 +36,8 @@ for i in "${!views[@]}"; do
 done
 /usr/bin/python3 - "$work" "$out" "${#views[@]}" "${#settings[@]}" "${views[@]}" "${settings[@]}" <<'PY'
 import datetime, json, math, struct, sys
+sys.path.insert(0, "benchmarks")
+from report import renderer_of, write_report
 work, out, view_count, setting_count = sys.argv[1], sys.argv[2], int(sys.argv[3]), int(sys.argv[4])
 views = sys.argv[5:5 + view_count]
 settings = sys.argv[5 + view_count:5 + view_count + setting_count]
@@ -71,8 +73,7 @@ def metrics(engine, direct, reference):
     return sum(le) / sum(lr), min(cells), max(cells), rmse
 
 header = [s.split("|")[0] for s in settings]
-renderer = json.load(open(f"{work}/t.json"))["renderer"]
-tag = "llvmpipe" if "llvmpipe" in renderer else renderer.split()[0].lower()
+renderer, tag = renderer_of(f"{work}/t.json")
 lines = ["# Narrow cones against the cone set", "",
          f"Renderer: {renderer}, measured {datetime.date.today()} by `bash benchmarks/narrow_cones.sh`. Indirect part (final − direct AOV) "
          "against `vct reference --bounces 1 --spp 512` (its indirect part): mean ratio [3×3 cells whose reference "
@@ -87,8 +88,5 @@ for i, view in enumerate(views):
         ssim = json.load(open(f"{work}/c{i}-{j}.json"))["ssim"]
         row.append(f"{ratio:.3f} [{low:.2f}–{high:.2f}] {rmse:.4f}, {ssim:.3f}")
     lines.append(f"| {name} | " + " | ".join(row) + " |")
-path = f"{out}/narrow_cones_{tag}.md"
-open(path, "w").write("\n".join(lines) + "\n")
-print("\n".join(lines))
-print(f"wrote {path}", file=sys.stderr)
+write_report(f"{out}/narrow_cones_{tag}.md", lines)
 PY

@@ -25,10 +25,10 @@ for scene in two_rooms_opening two_rooms_no_wall; do
 done
 /usr/bin/python3 - "$work" "$out" <<'PY'
 import datetime, json, sys
+sys.path.insert(0, "benchmarks")
+from report import renderer_of, write_report
 work, out = sys.argv[1], sys.argv[2]
-timings = json.load(open(f"{work}/two_rooms_opening-8-timings.json"))
-renderer = timings["renderer"]
-tag = "llvmpipe" if "llvmpipe" in renderer else renderer.split()[0].lower()
+renderer, tag = renderer_of(f"{work}/two_rooms_opening-8-timings.json")
 lines = ["# Openings: light from a sunlit floor seen far away at a grazing angle", "",
          f"Renderer: {renderer}, measured {datetime.date.today()} by `bash benchmarks/openings.sh`. Room B of "
          "`benchmarks/scenes/two_rooms_*.obj` seen from (4.3, 2, 0) towards its back wall; all its light is one "
@@ -46,8 +46,5 @@ for scene, name in (("two_rooms_opening", "wall with a 2 × 2 m opening"), ("two
         rows = [" ".join(cell(c) for c in regions["cells"] if c["row"] == r) for r in range(3)]
         ratio = regions["mean_a"] / regions["mean_b"]
         lines.append(f"| {name} | {2 ** levels}³ | {ratio:.3f} | {rows[0]} | {rows[1]} | {rows[2]} |")
-path = f"{out}/openings_{tag}.md"
-open(path, "w").write("\n".join(lines) + "\n")
-print("\n".join(lines))
-print(f"wrote {path}", file=sys.stderr)
+write_report(f"{out}/openings_{tag}.md", lines)
 PY
