@@ -42,7 +42,7 @@ void storeBounced(uint cell, uint cellCount, uint node, vec4 albedo, vec3 normal
     if (!(total > 0.0)) return;  // unlit and dark still: nothing to add
     vec3 direction = (firstDirection * dot(first, vec3(1.0)) +
                       normal * (dot(sent[0], vec3(1.0)) - dot(sent[1], vec3(1.0)))) / total;
-    float tau = opticalDepth(albedo.a);
+    float tau = radianceWeight(albedo.a);
     cellRadiance[cell] = vec4(radiance * tau, tau);
     cellDirection[cell] = vec4(direction * tau, tau);
     touch(node, uLevels);

@@ -13,10 +13,28 @@ layout(binding = TEXTURE_LIGHT_POSITION) uniform sampler2D uLightPosition;  // s
 layout(binding = TEXTURE_LIGHT_FLUX) uniform sampler2D uLightFlux;      // reflected flux per texel / the light's largest
 layout(binding = TEXTURE_LIGHT_NORMAL) uniform sampler2D uLightNormal;    // unit normal on the side facing the light
 layout(std430, binding = SSBO_CELL_AREA) buffer CellArea { float cellArea[]; };
+layout(std430, binding = SSBO_CELL_COLUMNS) buffer CellColumns { uint cellColumns[]; };
 
 uniform vec3 uVoxelOrigin;  // scene-local position of voxel (0,0,0)
 uniform float uVoxelScale;  // voxels per scene-local unit
 uniform float uUnitsPerRelativeFlux;  // fixed-point units of this light's largest texel flux (≤ 2^24)
+
+// The cells that share a triangle's pixel column with `node` (svo_leaves_normalize.comp): they
+// pool their photons with it in radiance_normalize, so they must be normalized too, even those
+// no photon landed in (a sliver of the triangle).
+void touchColumnPartners(uint node) {
+    uint partners = cellColumns[node - uLevelStart[uLevels]];
+    if (partners == 0u) return;
+    ivec3 cell = ivec3(unpackCell(nodeCoord[node]));
+    for (int bit = 0; bit < 6; ++bit) {
+        if ((partners & (1u << bit)) == 0u) continue;
+        ivec3 partner = cell;
+        partner[bit >> 1] += (bit & 1) == 0 ? -1 : 1;
+        if (any(lessThan(partner, ivec3(0))) || any(greaterThanEqual(partner, ivec3(1 << uLevels)))) continue;
+        uint partnerNode = findNode(uvec3(partner), uLevels);
+        if (partnerNode != NONE) touch(partnerNode, uLevels);
+    }
+}
 
 // Integer sums only, so the result does not depend on the order of the photons.
 void addPhoton(uint node, vec3 units, ivec3 litNormal) {
@@ -24,7 +42,7 @@ void addPhoton(uint node, vec3 units, ivec3 litNormal) {
     for (uint c = 0u; c < 3u; ++c) accumulate64(index + 2u * c, uint(round(units[c])));
     for (uint c = 0u; c < 3u; ++c) atomicAdd(radianceAccumulator[index + 6u + c], uint(litNormal[c]));
     atomicAdd(radianceAccumulator[index + 9u], 1u);
-    touch(node, uLevels);
+    if (touch(node, uLevels)) touchColumnPartners(node);
 }
 
 void main() {

@@ -4,8 +4,12 @@
 layout(std430, binding = SSBO_LIST_COUNTS) buffer ListCounts { uint listCounts[]; };
 layout(std430, binding = SSBO_TOUCHED_FLAG) buffer TouchedFlag { uint touchedFlag[]; };
 layout(std430, binding = SSBO_TOUCHED_LIST) buffer TouchedList { uint touchedList[]; };
+// A pass that needs every one of its 16 storage blocks (GL's least per compute shader) and not
+// the border lists defines RADIANCE_WITHOUT_BORDER_LISTS.
+#ifndef RADIANCE_WITHOUT_BORDER_LISTS
 layout(std430, binding = SSBO_BORDER_FLAG) buffer BorderFlag { uint borderFlag[]; };
 layout(std430, binding = SSBO_BORDER_LIST) buffer BorderList { uint borderList[]; };
+#endif
 layout(std430, binding = SSBO_CELL_RADIANCE) buffer CellRadiance { vec4 cellRadiance[]; };  // premultiplied (L·τ, τ)
 // The mean lit-side normal of the voxel's reflected light (radiance_normalize), premultiplied
 // (N·τ, τ); bound at SSBO_CELL_RADIANCE in place of CellRadiance when the brick passes filter it.
@@ -14,12 +18,12 @@ layout(std430, binding = SSBO_CELL_DIRECTION) buffer CellDirection { vec4 cellDi
 const uint BORDER_COUNTS = BORDER_COUNT_SLOT;
 const uint MISSED_COUNT = MISSED_COUNT_SLOT;
 
-// Marks `node` of `level` touched; the first to do so appends it to the level's list.
-void touch(uint node, int level) {
-    if (atomicExchange(touchedFlag[node], 1u) == 0u) {
-        uint slot = atomicAdd(listCounts[level], 1u);
-        touchedList[uLevelStart[level] + slot] = node;
-    }
+// Marks `node` of `level` touched; the first to do so appends it to the level's list and gets true.
+bool touch(uint node, int level) {
+    if (atomicExchange(touchedFlag[node], 1u) != 0u) return false;
+    uint slot = atomicAdd(listCounts[level], 1u);
+    touchedList[uLevelStart[level] + slot] = node;
+    return true;
 }
 
 // A slab's radiance for the pools: `seen` is what reaches its front face (mean over its cross-

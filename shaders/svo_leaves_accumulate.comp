@@ -5,6 +5,7 @@ layout(local_size_x = 64) in;
 // are bit-identical whatever the order in which thousands of fragments of one cell arrive.
 //   albedo: 8-bit channels summed in 32 bits (exact up to 16.8 M fragments per cell)
 //   normal: components × 127 summed as two's-complement 32-bit integers
+//   column partners: the bits of cellColumns (svo_leaves_normalize), or-ed
 //   area, emission, and (in uProjectedArea) the area projected along x, y, z (area·|n_a|; along
 //   the axis the triangle was projected on, the coverage of its column, voxelize.frag):
 //   64-bit fixed point (low word, then a carry into the high word)
@@ -50,6 +51,13 @@ void main() {
     vec3 projected = area * abs(unpackNormal(fragment.z));
     uint column = fragment.y >> 24;
     projected[columnAxis(column)] = max(projected[columnAxis(column)], columnCoverage(column));
+    if (columnCoverage(column) > 0.0) {
+        // The cells beside this one along the projection axis that hold the same triangle's column.
+        uint bits = 0u;
+        if ((fragment.x & COLUMN_CONTINUES_BELOW) != 0u) bits |= 1u << (2 * columnAxis(column));
+        if ((fragment.x & COLUMN_CONTINUES_ABOVE) != 0u) bits |= 2u << (2 * columnAxis(column));
+        if (bits != 0u) imageAtomicOr(uAccumulators, base + 15, bits);
+    }
     for (int c = 0; c < 3; ++c) {
         uint value = uint(round(projected[c] * AREA_SCALE));
         int index = int(cell) * PROJECTED_AREA_FIELDS + 2 * c;

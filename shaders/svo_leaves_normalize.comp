@@ -13,6 +13,10 @@ layout(std430, binding = SSBO_CELL_VALUES) buffer CellAlbedo { uint cellAlbedo[]
 layout(std430, binding = SSBO_CELL_NORMAL) buffer CellNormal { uint cellNormal[]; };    // octahedral
 layout(std430, binding = SSBO_CELL_AREA) buffer CellArea { float cellArea[]; };       // voxel-face units
 layout(std430, binding = SSBO_CELL_FRAGMENTS) buffer CellFragments { uint cellFragments[]; };
+// Bit 2a: a triangle of the cell crosses into the cell below it along a, in depth of its
+// projection (voxelize.frag); bit 2a + 1: into the cell above. radiance_normalize pools the
+// photons of such cells.
+layout(std430, binding = SSBO_CELL_COLUMNS) buffer CellColumns { uint cellColumns[]; };
 // Float, not half: emission may be anything from 1e-9 to 1e9 W/(m²·sr) (half floats flushed dim
 // emission to 0 and turned bright emission into Inf).
 layout(std430, binding = SSBO_CELL_EMISSIVE) buffer CellEmissive { vec4 cellEmissive[]; };  // RGB, 0
@@ -53,6 +57,7 @@ void main() {
     }
     cellOpacity[cell] = packUnorm4x8(vec4(min(projected, vec3(1.0)), min(area, 1.0)));
     cellFragments[cell] = count;
+    cellColumns[cell] = imageLoad(uAccumulators, base + 15).x;
     if (uHasEmissive != 0) {
         vec3 emission = vec3(float(load64(base + 9)), float(load64(base + 11)), float(load64(base + 13))) /
                         (uEmissiveScale * n);

@@ -9,6 +9,10 @@ uvec3 unpackCell(uint p) { return uvec3(p & 1023u, (p >> 10) & 1023u, (p >> 20) 
 // averaging α instead dilutes it by half per level and wide cones see through walls.
 const float MAX_OPACITY = 0.999;
 float opticalDepth(float alpha) { return -log(1.0 - min(alpha, MAX_OPACITY)); }
+// The weight a cell's radiance is stored with, (L·τ, τ): its optical depth, but never 0, so that
+// L survives in a cell whose area rounds to α = 0 at 8 bits yet blocks its share of a triangle's
+// pixel column (voxelize.frag), a sliver of a triangle crossing cells in depth.
+float radianceWeight(float alpha) { return max(opticalDepth(alpha), 1e-6); }
 // Opacity of a path of `length` voxels through a medium of density τ per voxel.
 float opacityOver(float tau, float length) { return 1.0 - exp(-tau * length); }
 
@@ -19,6 +23,13 @@ uint packColumnCoverage(int axis, float coverage) {
 }
 int columnAxis(uint bits) { return int(bits & 3u); }
 float columnCoverage(uint bits) { return float(bits >> 2) / 63.0; }
+
+// Where a fragment's cell lies in its triangle's pixel column (voxelize.frag), in the two bits of
+// the fragment's cell word above packCell's 30: whether the triangle also lies in a cell below it
+// (lower along the projection axis) and in one above it.
+const uint COLUMN_CONTINUES_BELOW = 1u << 30;
+const uint COLUMN_CONTINUES_ABOVE = 1u << 31;
+const uint CELL_BITS = (1u << 30) - 1u;
 
 // Octahedral encoding of a unit vector into two 16-bit snorm values.
 uint packNormal(vec3 n) {

@@ -27,7 +27,8 @@ flat in vec3 gColor2;
 flat in vec3 gFaceNormal;
 
 layout(std430, binding = SSBO_FRAGMENT_COUNTER) buffer FragmentCounter { uint fragmentCount; };
-// Per fragment: cell, texture × vertex colour RGB8 with the column coverage in the top byte
+// Per fragment: cell (with where the triangle continues in its column above packCell's bits,
+// voxel_common.glsl), texture × vertex colour RGB8 with the column coverage in the top byte
 // (packColumnCoverage; the material's colour factor and emission are applied by svo_leaves), the
 // triangle's normal (octahedral), material index << 16 | area (half float).
 layout(rgba32ui, binding = IMAGE_FRAGMENTS) uniform writeonly uimageBuffer uFragments;
@@ -166,17 +167,20 @@ void main() {
     int planeCell = clamp(int(floor(0.5 * (wLow + wHigh))), first, last);
     // Within one cell (or flat in one) the area already says what the cell blocks.
     float columnCoverage = span > 1e-6 && last > first ? coverage : 0.0;
-    uint albedo = packUnorm4x8(vec4(clamp(base.rgb, 0.0, 1.0), 0.0)) | (packColumnCoverage(gAxis, columnCoverage) << 24);
+    uint colour = packUnorm4x8(vec4(clamp(base.rgb, 0.0, 1.0), 0.0));
     uint packedNormal = packNormal(gFaceNormal);
     for (int k = first; k <= last; ++k) {
         float share = span > 1e-6 ? max(min(wHigh, float(k + 1)) - max(wLow, float(k)), 0.0) / span
                                   : (k == planeCell ? 1.0 : 0.0);
         float area = coverage * gAreaScale * share;
         uvec3 cell = unproject(uvec3(uvec2(pixel), uint(k)), gAxis);
+        // A cell the triangle only touches (no share of its depth) blocks nothing of the column.
+        uint albedo = colour | (packColumnCoverage(gAxis, share > 0.0 ? columnCoverage : 0.0) << 24);
         uint index = atomicAdd(fragmentCount, 1u);
         if (index < uCapacity) {
             uint materialAndArea = (uint(uMaterialIndex) << 16) | (packHalf2x16(vec2(area, 0.0)) & 0xFFFFu);
-            imageStore(uFragments, int(index), uvec4(packCell(cell), albedo, packedNormal, materialAndArea));
+            uint columnPlace = (wLow < float(k) ? COLUMN_CONTINUES_BELOW : 0u) | (wHigh > float(k + 1) ? COLUMN_CONTINUES_ABOVE : 0u);
+            imageStore(uFragments, int(index), uvec4(packCell(cell) | columnPlace, albedo, packedNormal, materialAndArea));
         }
     }
 }

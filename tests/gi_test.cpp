@@ -245,6 +245,52 @@ TEST(Gi, HalfShadowedVoxelsStoreHalf) {
                 origin.x, relative(edgeColumn), litFraction);
 }
 
+TEST(Gi, SliversOfATiltedSheetShowTheSheetsRadiance) {
+    // A sheet turned 26.6° about y crosses z-layers of voxels near the edges of the pixel columns
+    // it is voxelized along, leaving slivers of it (area < 0.1 voxel faces) in cells that block
+    // as much of the column as the whole sheet does. Few of the light-view map's photons land on
+    // a sliver, usually none: on their own these cells were black in front of the lit sheet.
+    // Pooled with the cells holding the rest of their columns, they show the sheet's radiance.
+    const auto dir = test::testDir();
+    test::ObjWriter obj;
+    obj.material("grey", glm::vec3(0.5f));
+    const float dz = 1.00153f;  // slope 0.50077: the z-layer crossings stay near the columns' edges
+    obj.quad({-2.0f, 0.0f, -dz}, {2.0f, 0.0f, dz}, {2.0f, 3.0f, dz}, {-2.0f, 3.0f, -dz});
+    // Two specks far away in ±z make the grid 16 m wide: voxels of 0.125 m at 128³.
+    for (float z : {-8.0f, 8.0f}) obj.quad({0.0f, 1.5f, z}, {0.01f, 1.5f, z}, {0.01f, 1.51f, z}, {0.0f, 1.51f, z});
+    Scene scene = loadModelFile(obj.write(dir));
+    Light sun;
+    sun.direction = glm::normalize(glm::dvec3(0.0, -0.3, -1.0));
+    sun.irradiance = 4.0;
+    auto context = gl::createContext(gl::defaultBackend());
+    const auto renderer = test::renderRadianceFrame(scene, {sun}, 7, 0);  // the default photons per voxel
+    const Octree& octree = renderer->octree()->octree();
+    const auto radiance = test::readBuffer<glm::vec4>(renderer->radiance()->cellRadiance, octree.cellCount());
+    const auto area = test::readBuffer<float>(octree.cellArea, octree.cellCount());
+    const auto opacity = test::readBuffer<std::uint32_t>(octree.cellOpacity, octree.cellCount());
+    double wholeSum = 0.0, sliverSum = 0.0;
+    int whole = 0, slivers = 0, darkSlivers = 0;
+    std::vector<double> sliverRadiance;
+    for (std::uint32_t i = 0; i < octree.cellCount(); ++i) {
+        const double L = radiance[i].w > 0.0f ? double(radiance[i].x) / radiance[i].w : 0.0;
+        if (area[i] >= 0.6f) wholeSum += L, ++whole;
+        const double alphaZ = double((opacity[i] >> 16) & 255) / 255.0;
+        if (area[i] < 0.1f && alphaZ >= 0.5) sliverRadiance.push_back(L);
+    }
+    ASSERT_GT(whole, 300);
+    const double expected = wholeSum / whole;
+    for (double L : sliverRadiance) {
+        sliverSum += L;
+        darkSlivers += L < 0.5 * expected ? 1 : 0;
+        ++slivers;
+    }
+    ASSERT_GT(slivers, 100);
+    std::printf("[ slivers  ] %d slivers blocking their column: mean radiance %.4f of the sheet's %.4f, %d darker than half\n",
+                slivers, sliverSum / slivers, expected, darkSlivers);
+    EXPECT_NEAR(sliverSum / slivers, expected, 0.1 * expected);
+    EXPECT_LE(darkSlivers, slivers / 20);  // every one of them was dark on its own photons
+}
+
 TEST(Gi, CornellBoxBleedsColourWhereAPathTracerPutsIt) {
     const auto dir = test::testDir();
     const Scene scene = makeCornellBox();

@@ -48,6 +48,7 @@ std::vector<std::pair<std::string, std::vector<std::uint8_t>>> snapshot(const Sc
     buffer("cell albedo", o.cellAlbedo, std::size_t(o.cellCount()) * 4);
     buffer("cell normal", o.cellNormal, std::size_t(o.cellCount()) * 4);
     buffer("cell area", o.cellArea, std::size_t(o.cellCount()) * 4);
+    buffer("cell column partners", o.cellColumns, std::size_t(o.cellCount()) * 4);
     buffer("node raw values", o.rawValue, std::size_t(o.nodeCount) * 16);
     texture("albedo bricks", o.brickAlbedo.id(), o.brickPoolBricks);
     buffer("cell opacity by axis", o.cellOpacity, std::size_t(o.cellCount()) * 4);

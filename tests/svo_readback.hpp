@@ -14,6 +14,10 @@
 
 namespace vct::test {
 
+// A fragment's cell word holds packCell's 30 bits and above them where its triangle continues in
+// its pixel column (shaders/voxel_common.glsl, COLUMN_CONTINUES_BELOW/ABOVE).
+constexpr std::uint32_t kFragmentCellBits = (1u << 30) - 1u;
+
 inline float halfToFloat(std::uint16_t h) {
     const int exponent = (h >> 10) & 31, mantissa = h & 1023;
     const float value = exponent == 0 ? std::ldexp(float(mantissa), -24)
@@ -131,7 +135,7 @@ private:
         const FragmentList& f = builder().fragments();
         const auto raw = readBuffer<std::uint32_t>(f.data, std::size_t(f.count) * 4);
         for (std::size_t i = 0; i < f.count; ++i) {
-            d.fragmentCell.push_back(raw[i * 4]);
+            d.fragmentCell.push_back(raw[i * 4] & kFragmentCellBits);
             d.fragmentAlbedo.push_back(raw[i * 4 + 1]);
             d.fragmentMaterial.push_back(raw[i * 4 + 3] >> 16);
             d.fragmentArea.push_back(halfToFloat(std::uint16_t(raw[i * 4 + 3] & 0xFFFF)));

@@ -37,6 +37,7 @@
     X(SSBO_BORDER_LIST, 17)                                                                       \
     X(SSBO_CELL_RADIANCE, 18)        /* per voxel: (L·τ, τ), or the channel being filtered */     \
     X(SSBO_INDIRECT_ARGS, 19)                                                                     \
+    X(SSBO_CELL_COLUMNS, 20)         /* per voxel: its triangles' column partners (svo_leaves) */  \
     X(SSBO_MATERIALS, 21)            /* {baseColor, emissive} per material */                     \
     X(SSBO_CONE_COUNTERS, 22)                                                                     \
     X(SSBO_CELL_DIRECTION, 23)                                                                    \

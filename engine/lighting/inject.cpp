@@ -49,7 +49,8 @@ void PhotonInjection::run(const Octree& octree, RadianceVolume& volume, const Sc
         bindRadianceVolume(volume);
         inject.uniform("uVoxelOrigin", glm::vec3(octree.grid.localMin))
             .uniform("uVoxelScale", float(1.0 / octree.grid.voxelSize))
-            .storage(gl::SSBO_CELL_AREA, octree.cellArea);
+            .storage(gl::SSBO_CELL_AREA, octree.cellArea)
+            .storage(gl::SSBO_CELL_COLUMNS, octree.cellColumns);
         for (std::size_t i = 0; i < lights.size(); ++i)
             for (const LightViewMap& map : lightViews[i]) {
                 // Units for a texel of relative flux 1: ≤ 2^24 (the brightest light), in double first.
@@ -72,6 +73,7 @@ void PhotonInjection::run(const Octree& octree, RadianceVolume& volume, const Sc
     bindRadianceVolume(volume);
     normalize.storage(gl::SSBO_CELL_VALUES, octree.cellAlbedo)
         .storage(gl::SSBO_CELL_AREA, octree.cellArea)
+        .storage(gl::SSBO_CELL_COLUMNS, octree.cellColumns)
         .uniform("uLevel", octree.levels)
         .uniform("uHasEmissive", octree.hasEmissive ? 1 : 0);
     if (octree.hasEmissive) normalize.storage(gl::SSBO_CELL_EMISSIVE, octree.cellEmissive);

@@ -46,6 +46,9 @@ struct Octree {
     // Cells (level L), levelCount[L] entries each: albedo+opacity RGBA8, normal oct16, area in
     // voxel-face units, fragment count, emission float RGB(A) (only with emissive materials).
     gl::Buffer cellAlbedo, cellNormal, cellArea, cellFragments, cellEmissive;
+    // Per cell, the cells beside it that hold the rest of one of its triangles' pixel columns
+    // (bit 2a: below along axis a, 2a + 1: above; shaders/svo_leaves_normalize.comp).
+    gl::Buffer cellColumns;
     // Opacity by direction, RGBA8 per cell: (αx, αy, αz, α) with α_a = min(1, Σ area·|n_a|), the
     // surface's area projected along axis a in voxel-face units, and α = min(1, Σ area).
     gl::Buffer cellOpacity;
@@ -65,7 +68,7 @@ struct Octree {
     std::uint32_t leafCount() const { return levelCount[levels - 1]; }  // nodes whose children are cells
     std::size_t nodePoolBytes() const { return std::size_t(totalCount) * 16; }
     std::size_t neighbourBytes() const { return std::size_t(nodeCount) * 24; }
-    std::size_t cellBytes() const { return std::size_t(cellCount()) * (20 + (hasEmissive ? 16 : 0)); }
+    std::size_t cellBytes() const { return std::size_t(cellCount()) * (24 + (hasEmissive ? 16 : 0)); }
     std::size_t brickPoolBytes() const;
     // A dense RGBA16F 3D texture of the same resolution with its full mip chain (for comparison).
     std::size_t denseTextureBytes() const;

@@ -58,6 +58,7 @@ LeafStatistics SvoLeaves::run(const FragmentList& fragments, GLuint fragmentNode
     octree.cellNormal = gl::createBuffer(bytes, nullptr, 0, "cell normal");
     octree.cellArea = gl::createBuffer(bytes, nullptr, 0, "cell area");
     octree.cellFragments = gl::createBuffer(bytes, nullptr, 0, "cell fragments");
+    octree.cellColumns = gl::createBuffer(bytes, nullptr, 0, "cell column partners");
     octree.cellOpacity = gl::createBuffer(bytes, nullptr, 0, "cell opacity by axis");
     if (emissive) octree.cellEmissive = gl::createBuffer(bytes * 4, nullptr, 0, "cell emission");
     else octree.cellEmissive.reset();
@@ -76,6 +77,7 @@ LeafStatistics SvoLeaves::run(const FragmentList& fragments, GLuint fragmentNode
         .storage(gl::SSBO_CELL_NORMAL, octree.cellNormal)
         .storage(gl::SSBO_CELL_AREA, octree.cellArea)
         .storage(gl::SSBO_CELL_FRAGMENTS, octree.cellFragments)
+        .storage(gl::SSBO_CELL_COLUMNS, octree.cellColumns)
         .storage(gl::SSBO_CELL_OPACITY, octree.cellOpacity);
     if (emissive) normalize.storage(gl::SSBO_CELL_EMISSIVE, octree.cellEmissive);
     normalize.dispatch1D(cells, 64, barrier | GL_BUFFER_UPDATE_BARRIER_BIT);
