@@ -142,6 +142,11 @@ void traceCones(FrameResources& f, const FrameView& v) {
 }
 
 void renderVoxelView(FrameResources& f, const FrameView& v) {
+    if (f.settings.view == ViewMode::Cones) {
+        if (!f.coneView) f.coneView = std::make_unique<ConeView>(f.settings.width, f.settings.height);
+        f.coneView->render(f.svo->octree(), *f.radiance, *v.camera, *f.scene, frameCones(f.settings));
+        return;
+    }
     if (!f.voxelView) f.voxelView = std::make_unique<VoxelView>(f.settings.width, f.settings.height);
     const int level = f.settings.voxelViewLevel ? f.settings.voxelViewLevel : f.settings.voxelLevels;
     const RadianceVolume* radiance = f.settings.view == ViewMode::Radiance ? f.radiance.get() : nullptr;
@@ -150,8 +155,9 @@ void renderVoxelView(FrameResources& f, const FrameView& v) {
 
 void composite(FrameResources& f, const FrameView& v) {
     if (f.settings.view != ViewMode::Lit) {
+        const GLuint debugImage = f.settings.view == ViewMode::Cones ? f.coneView->image() : f.voxelView->image();
         f.composite->render(*f.gbuffer, f.direct->radiance(), 0, v.transform, 1.0f, f.settings.display,
-                            v.samplesInAverage, f.voxelView->image(), f.settings.view == ViewMode::Radiance);
+                            v.samplesInAverage, debugImage, f.settings.view != ViewMode::Voxels);
         return;
     }
     const GLuint indirect = f.settings.gi && f.coneTrace ? f.coneTrace->indirect() : 0;
@@ -239,10 +245,10 @@ const PassTable kFramePasses = {{
      "cone_trace.comp, indirect_filter.comp, cone_upsample.comp",
      traceCones},
     {Pass::VoxelView, "voxel_view", Stage::Camera,
-     {I::Camera, I::OutputSize, I::ViewSettings}, {R::GeometryBricks, R::RadianceBricks, R::BouncedRadiance},
+     {I::Camera, I::OutputSize, I::ViewSettings, I::ConeSettings}, {R::GeometryBricks, R::RadianceBricks, R::BouncedRadiance},
      {R::DebugImage},
      unlessVoxelView,
-     "voxel_view.comp",
+     "voxel_view.comp, cone_view.comp",
      renderVoxelView},
     {Pass::Composite, "composite", Stage::Output,
      {I::DisplaySettings, I::ViewSettings, I::OutputSize},

@@ -17,6 +17,7 @@
 #include "render/gpu_scene.hpp"
 #include "render/light_view_cache.hpp"
 #include "render/view.hpp"
+#include "render/cone_view.hpp"
 #include "render/voxel_view.hpp"
 #include "scene/scene.hpp"
 #include "voxel/svo_builder.hpp"
@@ -52,6 +53,7 @@ struct FrameResources {
     std::unique_ptr<DirectLighting> direct;              // DirectRadiance
     std::unique_ptr<ConeTrace> coneTrace;                // IndirectIrradiance
     std::unique_ptr<VoxelView> voxelView;                // DebugImage
+    std::unique_ptr<ConeView> coneView;                  // DebugImage (--view cones)
     std::unique_ptr<Composite> composite;                // Output
     FrameStatistics statistics;
 

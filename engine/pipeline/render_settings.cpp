@@ -14,7 +14,8 @@ ViewMode parseViewMode(const std::string& name) {
     if (name == "lit") return ViewMode::Lit;
     if (name == "voxels") return ViewMode::Voxels;
     if (name == "radiance") return ViewMode::Radiance;
-    fail("unknown --view '", name, "'; use lit, voxels or radiance");
+    if (name == "cones") return ViewMode::Cones;
+    fail("unknown --view '", name, "'; use lit, voxels, radiance or cones");
 }
 
 void validateRenderSettings(const RenderSettings& s) {
@@ -66,7 +67,7 @@ int photonMapResolution(const RenderSettings& s) {
 bool needsOctree(const RenderSettings& s) { return s.view != ViewMode::Lit || s.gi; }
 
 bool needsRadiance(const RenderSettings& s) {
-    return s.view == ViewMode::Radiance || (s.view == ViewMode::Lit && s.gi);
+    return s.view == ViewMode::Radiance || s.view == ViewMode::Cones || (s.view == ViewMode::Lit && s.gi);
 }
 
 }  // namespace vct

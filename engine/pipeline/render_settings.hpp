@@ -12,7 +12,7 @@
 
 namespace vct {
 
-enum class ViewMode { Lit, Voxels, Radiance };
+enum class ViewMode { Lit, Voxels, Radiance, Cones };
 ViewMode parseViewMode(const std::string& name);
 
 struct RenderSettings {
@@ -56,6 +56,6 @@ int photonMapResolution(const RenderSettings& settings);
 // What a frame with these settings needs (the pass table's skip reasons and the memory budget
 // both ask here).
 bool needsOctree(const RenderSettings& settings);    // GI or a voxel view
-bool needsRadiance(const RenderSettings& settings);  // GI in the lit view, or the radiance view
+bool needsRadiance(const RenderSettings& settings);  // GI in the lit view, or the radiance or cone view
 
 }  // namespace vct

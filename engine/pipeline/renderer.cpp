@@ -23,6 +23,7 @@ void Renderer::createSizedTargets() {
     frame_.composite = std::make_unique<Composite>(width, height);
     frame_.coneTrace.reset();
     frame_.voxelView.reset();
+    frame_.coneView.reset();
 }
 
 void Renderer::setSettings(const RenderSettings& s) {
@@ -146,6 +147,7 @@ std::vector<MemoryPool> Renderer::memory() const {
     if (frame_.bounces) pools.push_back({"first-bounce radiance (for further bounces)", frame_.bounces->bytes()});
     if (frame_.coneTrace) pools.push_back({"indirect irradiance", frame_.coneTrace->bytes()});
     if (frame_.voxelView) pools.push_back({"voxel view", frame_.voxelView->bytes()});
+    if (frame_.coneView) pools.push_back({"cone view", frame_.coneView->bytes()});
     return pools;
 }
 

@@ -214,9 +214,9 @@ void settingsSection(ViewerState& state, bool& changed) {
     changed |= ImGui::SliderFloat("GI filter (voxels, 0 = off)", &s.giFilter, 0.0f, 16.0f, "%.1f",
                                   ImGuiSliderFlags_AlwaysClamp);
 
-    static const char* const views[] = {"lit", "voxels (V)", "radiance (Shift+V)"};
+    static const char* const views[] = {"lit", "voxels (V)", "radiance (Shift+V)", "cones"};
     int view = int(s.view);
-    if (comboOf("view", view, views, 3)) {
+    if (comboOf("view", view, views, 4)) {
         s.view = ViewMode(view);
         changed = true;
     }

@@ -1,0 +1,31 @@
+#pragma once
+// Debug view `--view cones`: one narrow cone per pixel from the eye through the radiance pools,
+// marched as the cones that gather indirect light march (shaders/cone_view.comp). Its image is
+// what such a cone brings back from each direction; `--aov direct` of the same camera is what it
+// should bring back under the one-bounce model.
+#include "gl/objects.hpp"
+#include "lighting/radiance_volume.hpp"
+#include "render/cone_trace.hpp"
+#include "scene/camera.hpp"
+#include "scene/scene.hpp"
+#include "voxel/octree.hpp"
+
+namespace vct {
+
+class ConeView {
+public:
+    ConeView(int width, int height);
+    // The cones' aperture and step are those of `settings` in narrow-cone mode (kNarrowConeTan ×
+    // apertureScale), whatever its cone count.
+    void render(const Octree& octree, const RadianceVolume& radiance, const Camera& camera, const Scene& scene,
+                const ConeSettings& settings);
+    GLuint image() const { return image_.id(); }
+    std::size_t bytes() const { return std::size_t(width_) * height_ * 16; }
+
+private:
+    int width_, height_;
+    gl::Texture image_;
+    gl::Program program_;
+};
+
+}  // namespace vct

@@ -1,0 +1,25 @@
+#pragma once
+// The camera's pixel rays in voxel space, for the debug views that march the octree from the eye
+// (voxel_view.comp, cone_view.comp): pixel (x, y) of a width × height image looks along
+// normalize(forward + u·tanHalfFov.x·right + v·tanHalfFov.y·up), u and v its centre in [−1, 1].
+#include <glm/glm.hpp>
+
+#include "gl/compute.hpp"
+#include "scene/camera.hpp"
+#include "scene/scene.hpp"
+#include "voxel/octree.hpp"
+
+namespace vct {
+
+struct EyeRays {
+    glm::vec3 eye{0.0f};  // voxel space
+    glm::vec3 forward{0.0f}, right{0.0f}, up{0.0f};
+    glm::vec2 tanHalfFov{0.0f};
+};
+
+EyeRays eyeRaysInVoxels(const Octree& octree, const Camera& camera, const Scene& scene, int width, int height);
+
+// uEyeVoxel, uForward, uRight, uUp and uTanHalfFov on `call`.
+void setEyeRayUniforms(gl::ComputeCall& call, const EyeRays& rays);
+
+}  // namespace vct

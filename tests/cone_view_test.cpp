@@ -1,0 +1,99 @@
+// `--view cones` (render/cone_view): one narrow cone per pixel from the eye, marched as the cones
+// that gather indirect light march. What it sees of a lit surface must be that surface's radiance
+// (the direct AOV of the same camera), and of the dark side of a lit wall nothing.
+#include <cstdio>
+
+#include "gl/context.hpp"
+#include "pipeline/renderer.hpp"
+#include "scene/scene_loader.hpp"
+#include "test_models.hpp"
+#include "test_util.hpp"
+
+using namespace vct;
+
+namespace {
+
+// Mean luminance over the central window of an image (a quarter of each side cut off).
+double centralMean(const ImageF& image) {
+    double sum = 0.0;
+    int n = 0;
+    for (int y = image.height / 4; y < image.height * 3 / 4; ++y)
+        for (int x = image.width / 4; x < image.width * 3 / 4; ++x) {
+            const float* p = image.at(x, y);
+            sum += 0.2126 * p[0] + 0.7152 * p[1] + 0.0722 * p[2];
+            ++n;
+        }
+    return sum / n;
+}
+
+Camera lookingAt(glm::dvec3 eye, glm::dvec3 target) {
+    Camera camera;
+    camera.eye = eye;
+    camera.target = target;
+    camera.up = {0.0, 1.0, 0.0};
+    camera.fovYDeg = 40.0;
+    return camera;
+}
+
+// The central mean of the cone view and of the direct AOV seen by `camera`.
+std::pair<double, double> coneViewAndDirect(Renderer& renderer, const Camera& camera) {
+    RenderSettings s = renderer.settings();
+    s.view = ViewMode::Cones;
+    renderer.setSettings(s);
+    renderer.renderFrame(camera);
+    const double cones = centralMean(renderer.readHdr());
+    s.view = ViewMode::Lit;
+    s.display.aov = Aov::Direct;
+    renderer.setSettings(s);
+    renderer.renderFrame(camera);
+    return {cones, centralMean(renderer.readHdr())};
+}
+
+RenderSettings smallSettings() {
+    RenderSettings s;
+    s.width = 64;
+    s.height = 48;
+    s.voxelLevels = 6;
+    return s;
+}
+
+}  // namespace
+
+TEST(ConeView, SeesALitFloorAtItsRadiance) {
+    const auto dir = test::testDir();
+    test::ObjWriter obj;
+    obj.material("grey", glm::vec3(0.5f));
+    obj.floor(0.0f, 4.0f);
+    Scene scene = loadModelFile(obj.write(dir));
+    Light sun;
+    sun.direction = {0.0, -1.0, 0.0};
+    sun.irradiance = 4.0;
+    scene.lights = {sun};
+    auto context = gl::createContext(gl::defaultBackend());
+    Renderer renderer(scene, smallSettings());
+    const auto [cones, direct] = coneViewAndDirect(renderer, lookingAt({0.0, 2.0, 3.0}, {0.0, 0.0, 0.0}));
+    std::printf("[ cone view] lit floor: cones see %.4f, its radiance %.4f (%.3fx)\n", cones, direct, cones / direct);
+    EXPECT_NEAR(direct, 0.5 / 3.14159265 * 4.0, 0.01);
+    EXPECT_NEAR(cones / direct, 1.0, 0.1);
+}
+
+TEST(ConeView, SeesNothingOfALitWallFromItsDarkSide) {
+    const auto dir = test::testDir();
+    test::ObjWriter obj;
+    obj.material("grey", glm::vec3(0.5f));
+    obj.quad({-2.0f, 0.0f, 0.0f}, {2.0f, 0.0f, 0.0f}, {2.0f, 3.0f, 0.0f}, {-2.0f, 3.0f, 0.0f});
+    Scene scene = loadModelFile(obj.write(dir));
+    Light sun;
+    sun.direction = glm::normalize(glm::dvec3(0.0, -0.5, -1.0));  // onto the wall's +z side
+    sun.irradiance = 4.0;
+    scene.lights = {sun};
+    auto context = gl::createContext(gl::defaultBackend());
+    Renderer renderer(scene, smallSettings());
+    const auto [litCones, litDirect] = coneViewAndDirect(renderer, lookingAt({0.0, 1.5, 1.2}, {0.0, 1.5, 0.0}));
+    const auto [darkCones, darkDirect] = coneViewAndDirect(renderer, lookingAt({0.0, 1.5, -1.2}, {0.0, 1.5, 0.0}));
+    std::printf("[ cone view] wall: lit side %.4f (radiance %.4f), dark side %.5f (%.2f %% of the lit side)\n", litCones,
+                litDirect, darkCones, 100.0 * darkCones / litDirect);
+    EXPECT_NEAR(litCones / litDirect, 1.0, 0.1);
+    EXPECT_EQ(darkDirect, 0.0);
+    EXPECT_LT(darkCones, 0.02 * litDirect);
+}
