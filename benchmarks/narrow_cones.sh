@@ -35,24 +35,12 @@ for i in "${!views[@]}"; do
   done
 done
 /usr/bin/python3 - "$work" "$out" "${#views[@]}" "${#settings[@]}" "${views[@]}" "${settings[@]}" <<'PY'
-import datetime, json, math, struct, sys
+import datetime, json, math, sys
 sys.path.insert(0, "benchmarks")
-from report import renderer_of, write_report
+from report import luminance, read_pfm, renderer_of, write_report
 work, out, view_count, setting_count = sys.argv[1], sys.argv[2], int(sys.argv[3]), int(sys.argv[4])
 views = sys.argv[5:5 + view_count]
 settings = sys.argv[5 + view_count:5 + view_count + setting_count]
-
-def read_pfm(path):  # rows bottom to top, as the file stores them; only sums and cells are taken
-    with open(path, "rb") as f:
-        kind = f.readline().strip()
-        width, height = map(int, f.readline().split())
-        scale = float(f.readline())
-        channels = 3 if kind == b"PF" else 1
-        data = struct.unpack(("<" if scale < 0 else ">") + "f" * (width * height * channels), f.read())
-    return width, height, [data[k:k + 3] for k in range(0, len(data), channels)]
-
-def luminance(p):
-    return 0.2126 * p[0] + 0.7152 * p[1] + 0.0722 * p[2]
 
 def metrics(engine, direct, reference):
     width, height, e = read_pfm(engine)

@@ -1,6 +1,8 @@
 """What the benchmark scripts' reports share: the renderer named in a `vct render --timings` file,
-the short tag of a results file's name, and writing the report (also to stdout)."""
+the short tag of a results file's name, reading the images vct writes (PFM), and writing the
+report (also to stdout)."""
 import json
+import struct
 import sys
 
 
@@ -16,3 +18,18 @@ def write_report(path, lines):
     open(path, "w").write("\n".join(lines) + "\n")
     print("\n".join(lines))
     print(f"wrote {path}", file=sys.stderr)
+
+
+def read_pfm(path):
+    """A PFM image as (width, height, pixels): RGB tuples, rows bottom to top as the file stores them."""
+    with open(path, "rb") as f:
+        kind = f.readline().strip()
+        width, height = map(int, f.readline().split())
+        scale = float(f.readline())
+        channels = 3 if kind == b"PF" else 1
+        data = struct.unpack(("<" if scale < 0 else ">") + "f" * (width * height * channels), f.read())
+    return width, height, [data[k:k + 3] if channels == 3 else (data[k],) * 3 for k in range(0, len(data), channels)]
+
+
+def luminance(p):
+    return 0.2126 * p[0] + 0.7152 * p[1] + 0.0722 * p[2]

@@ -1,6 +1,7 @@
-// `--view cones` (render/cone_view): one narrow cone per pixel from the eye, marched as the cones
-// that gather indirect light march. What it sees of a lit surface must be that surface's radiance
-// (the direct AOV of the same camera), and of the dark side of a lit wall nothing.
+// `--view cones` (render/cone_view): one cone per pixel from the eye, as wide as the cone set's cap
+// or as a narrow cone, marched as the cones that gather indirect light march. What it sees of a
+// uniformly lit surface must be that surface's radiance (the direct AOV of the same camera), and
+// of the dark side of a lit wall nothing.
 #include <cstdio>
 
 #include "gl/context.hpp"
@@ -49,17 +50,24 @@ std::pair<double, double> coneViewAndDirect(Renderer& renderer, const Camera& ca
     return {cones, centralMean(renderer.readHdr())};
 }
 
-RenderSettings smallSettings() {
+RenderSettings smallSettings(int narrowCones) {
     RenderSettings s;
     s.width = 64;
     s.height = 48;
     s.voxelLevels = 6;
+    s.cones.rays = narrowCones;
     return s;
 }
 
+// The cone set's cap (0) and a narrow cone (1).
+class WhatACone : public ::testing::TestWithParam<int> {};
+
 }  // namespace
 
-TEST(ConeView, SeesALitFloorAtItsRadiance) {
+INSTANTIATE_TEST_SUITE_P(ConeView, WhatACone, ::testing::Values(0, 1),
+                         [](const ::testing::TestParamInfo<int>& info) { return info.param ? "Narrow" : "CapOfTheSet"; });
+
+TEST_P(WhatACone, SeesALitFloorAtItsRadiance) {
     const auto dir = test::testDir();
     test::ObjWriter obj;
     obj.material("grey", glm::vec3(0.5f));
@@ -70,14 +78,15 @@ TEST(ConeView, SeesALitFloorAtItsRadiance) {
     sun.irradiance = 4.0;
     scene.lights = {sun};
     auto context = gl::createContext(gl::defaultBackend());
-    Renderer renderer(scene, smallSettings());
+    Renderer renderer(scene, smallSettings(GetParam()));
     const auto [cones, direct] = coneViewAndDirect(renderer, lookingAt({0.0, 2.0, 3.0}, {0.0, 0.0, 0.0}));
-    std::printf("[ cone view] lit floor: cones see %.4f, its radiance %.4f (%.3fx)\n", cones, direct, cones / direct);
+    std::printf("[ cone view] %s, lit floor: cones see %.4f, its radiance %.4f (%.3fx)\n", GetParam() ? "narrow" : "cap",
+                cones, direct, cones / direct);
     EXPECT_NEAR(direct, 0.5 / 3.14159265 * 4.0, 0.01);
     EXPECT_NEAR(cones / direct, 1.0, 0.1);
 }
 
-TEST(ConeView, SeesNothingOfALitWallFromItsDarkSide) {
+TEST_P(WhatACone, SeesNothingOfALitWallFromItsDarkSide) {
     const auto dir = test::testDir();
     test::ObjWriter obj;
     obj.material("grey", glm::vec3(0.5f));
@@ -88,11 +97,11 @@ TEST(ConeView, SeesNothingOfALitWallFromItsDarkSide) {
     sun.irradiance = 4.0;
     scene.lights = {sun};
     auto context = gl::createContext(gl::defaultBackend());
-    Renderer renderer(scene, smallSettings());
+    Renderer renderer(scene, smallSettings(GetParam()));
     const auto [litCones, litDirect] = coneViewAndDirect(renderer, lookingAt({0.0, 1.5, 1.2}, {0.0, 1.5, 0.0}));
     const auto [darkCones, darkDirect] = coneViewAndDirect(renderer, lookingAt({0.0, 1.5, -1.2}, {0.0, 1.5, 0.0}));
-    std::printf("[ cone view] wall: lit side %.4f (radiance %.4f), dark side %.5f (%.2f %% of the lit side)\n", litCones,
-                litDirect, darkCones, 100.0 * darkCones / litDirect);
+    std::printf("[ cone view] %s, wall: lit side %.4f (radiance %.4f), dark side %.5f (%.2f %% of the lit side)\n",
+                GetParam() ? "narrow" : "cap", litCones, litDirect, darkCones, 100.0 * darkCones / litDirect);
     EXPECT_NEAR(litCones / litDirect, 1.0, 0.1);
     EXPECT_EQ(darkDirect, 0.0);
     EXPECT_LT(darkCones, 0.02 * litDirect);

@@ -1,9 +1,16 @@
 #include "render/cone_view.hpp"
 
+#include <cmath>
+
 #include "gl/compute.hpp"
 #include "render/eye_rays.hpp"
 
 namespace vct {
+
+float viewConeTan(const ConeSettings& settings) {
+    const float tan = settings.rays > 0 ? kNarrowConeTan : std::tan(makeConeSet(settings.cones).front().halfAngle);
+    return tan * settings.apertureScale;
+}
 
 ConeView::ConeView(int width, int height)
     : width_(width),
@@ -13,11 +20,11 @@ ConeView::ConeView(int width, int height)
 
 void ConeView::render(const Octree& octree, const RadianceVolume& radiance, const Camera& camera, const Scene& scene,
                       const ConeSettings& settings) {
-    ConeSettings narrow = settings;
-    narrow.rays = 1;  // the sampling of narrow cones (one level per sample, reads across empty nodes)
-    narrow.onlyCone = -1;
+    ConeSettings cone = settings;
+    cone.onlyCone = -1;
     gl::ComputeCall call(program_);
-    setConeMarchUniforms(call, octree, radiance, narrow);
+    setConeMarchUniforms(call, octree, radiance, cone);
+    call.uniform("uViewTanHalfAngle", viewConeTan(settings));
     setEyeRayUniforms(call, eyeRaysInVoxels(octree, camera, scene, width_, height_));
     call.image(gl::IMAGE_VOXEL_VIEW, image_.id(), GL_WRITE_ONLY, GL_RGBA32F)
         .dispatchImage(width_, height_, GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);

@@ -1,8 +1,8 @@
 #pragma once
-// Debug view `--view cones`: one narrow cone per pixel from the eye through the radiance pools,
-// marched as the cones that gather indirect light march (shaders/cone_view.comp). Its image is
-// what such a cone brings back from each direction; `--aov direct` of the same camera is what it
-// should bring back under the one-bounce model.
+// Debug view `--view cones`: one cone per pixel from the eye through the radiance pools, marched as
+// the cones that gather indirect light march (shaders/cone_view.comp). Its image is what such a
+// cone brings back from each direction; `--aov direct` of the same camera, averaged over the
+// cone's solid angle, is what it should bring back under the one-bounce model.
 #include "gl/objects.hpp"
 #include "lighting/radiance_volume.hpp"
 #include "render/cone_trace.hpp"
@@ -12,11 +12,15 @@
 
 namespace vct {
 
+// tan of the half-angle of the cone `--view cones` traces: the cone set's cap or a narrow cone,
+// times the aperture scale.
+float viewConeTan(const ConeSettings& settings);
+
 class ConeView {
 public:
     ConeView(int width, int height);
-    // The cones' aperture and step are those of `settings` in narrow-cone mode (kNarrowConeTan ×
-    // apertureScale), whatever its cone count.
+    // The cone is as wide as the cap of `settings`' cone set, or with narrow cones (rays > 0) as
+    // a narrow cone (viewConeTan), and samples as those cones do.
     void render(const Octree& octree, const RadianceVolume& radiance, const Camera& camera, const Scene& scene,
                 const ConeSettings& settings);
     GLuint image() const { return image_.id(); }
