@@ -26,6 +26,7 @@ const int AOV_NORMAL = 3;
 const int AOV_DEPTH = 4;
 const int AOV_INDIRECT = 5;
 const int AOV_AO = 6;
+const int AOV_GI = 7;
 
 uniform int uAov;
 uniform float uExposure;     // 2^EV
@@ -37,6 +38,11 @@ uniform int uShowDebugImage;  // 0: no, 1: as it is (albedo), 2: tone-mapped (ra
 uniform int uHasIndirect;
 uniform float uGiScale;  // 1 in every accuracy measurement (DESIGN 5.3)
 uniform int uSamplesInAverage;  // 1: this frame starts the average; n > 1: its n-th sample
+
+// Lambertian: outgoing radiance = ρ/π × irradiance, added with weight exactly uGiScale.
+vec3 indirectRadiance(ivec2 pixel) {
+    return uGiScale * texelFetch(uAlbedo, pixel, 0).rgb / PI * texelFetch(uIndirect, pixel, 0).rgb;
+}
 
 // The frame's own value at `pixel`: linear HDR (radiance, or the AOV's raw value) and coverage
 // (0 = sky). Accumulated frames average these, then display the average.
@@ -55,16 +61,15 @@ vec4 pixelValue(ivec2 pixel) {
         hdr = (sky || uHasIndirect == 0) ? vec3(0.0) : texelFetch(uIndirect, pixel, 0).rgb;  // irradiance, W/m²
     } else if (uAov == AOV_AO) {
         hdr = vec3(sky || uHasIndirect == 0 ? 1.0 : texelFetch(uIndirect, pixel, 0).a);
+    } else if (uAov == AOV_GI) {
+        // The indirect light the final image adds: what the reference's --indirect-out holds.
+        hdr = (sky || uHasIndirect == 0) ? vec3(0.0) : indirectRadiance(pixel);
     } else {
         hdr = texelFetch(uDirect, pixel, 0).rgb;
         // The direct AOV is what the reference's --direct-out holds: emission of the surface seen
         // plus light arriving straight from the lights.
         if (!sky) hdr += texelFetch(uEmissive, pixel, 0).rgb;
-        if (uAov == AOV_FINAL && !sky) {
-            // Lambertian: outgoing radiance = ρ/π × irradiance, added with weight exactly uGiScale.
-            if (uHasIndirect != 0)
-                hdr += uGiScale * texelFetch(uAlbedo, pixel, 0).rgb / PI * texelFetch(uIndirect, pixel, 0).rgb;
-        }
+        if (uAov == AOV_FINAL && !sky && uHasIndirect != 0) hdr += indirectRadiance(pixel);
     }
     return vec4(hdr, sky ? 0.0 : 1.0);
 }

@@ -291,6 +291,41 @@ TEST(Gi, SliversOfATiltedSheetShowTheSheetsRadiance) {
     EXPECT_LE(darkSlivers, slivers / 20);  // every one of them was dark on its own photons
 }
 
+TEST(Gi, TheGiOutputIsWhatTheFinalImageAddsToTheDirectLight) {
+    // --aov gi is ρ/π × irradiance × --gi-scale: final − direct, the engine's side of the
+    // reference's --indirect-out. With --gi-scale 0.5 it halves, and it is 0 with GI off.
+    const Scene scene = makeCornellBox();
+    auto context = gl::createContext(gl::defaultBackend());
+    RenderSettings s;
+    s.width = 48;
+    s.height = 36;
+    s.voxelLevels = 6;
+    Renderer renderer(scene, s);
+    auto output = [&](Aov aov, float giScale, bool gi) {
+        RenderSettings t = s;
+        t.display.aov = aov;
+        t.display.giScale = giScale;
+        t.gi = gi;
+        renderer.setSettings(t);
+        renderer.renderFrame(scene.cameras[0]);
+        return renderer.readHdr();
+    };
+    const ImageF final = output(Aov::Final, 1.0f, true), direct = output(Aov::Direct, 1.0f, true);
+    const ImageF gi = output(Aov::Gi, 1.0f, true), half = output(Aov::Gi, 0.5f, true), off = output(Aov::Gi, 1.0f, false);
+    double largestDifference = 0.0, sum = 0.0, halfSum = 0.0, offSum = 0.0;
+    for (std::size_t i = 0; i < gi.rgba.size(); i += 4)
+        for (int c = 0; c < 3; ++c) {
+            largestDifference = std::max(largestDifference, double(std::abs(final.rgba[i + c] - direct.rgba[i + c] - gi.rgba[i + c])));
+            sum += gi.rgba[i + c];
+            halfSum += half.rgba[i + c];
+            offSum += std::abs(off.rgba[i + c]);
+        }
+    EXPECT_GT(sum, 0.0);
+    EXPECT_LT(largestDifference, 1e-5 * std::max(1.0, sum / double(gi.rgba.size())));
+    EXPECT_NEAR(halfSum / sum, 0.5, 1e-5);
+    EXPECT_EQ(offSum, 0.0);
+}
+
 TEST(Gi, CornellBoxBleedsColourWhereAPathTracerPutsIt) {
     const auto dir = test::testDir();
     const Scene scene = makeCornellBox();

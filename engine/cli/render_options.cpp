@@ -7,7 +7,9 @@
 namespace vct::cli {
 
 void addRenderSettingsOptions(CLI::App& command, RenderSettingsOptions& o) {
-    command.add_option("--aov", o.aov, "output buffer: final, direct, indirect, ao, albedo, normal, depth")
+    command.add_option("--aov", o.aov,
+                       "output buffer: final, direct, gi (final - direct, as vct reference --indirect-out), indirect "
+                       "(irradiance), ao, albedo, normal, depth")
         ->capture_default_str();
     command.add_option("--exposure", o.exposureEV, "exposure in stops (EV); default: the scene's");
     command.add_option("--tonemap", o.toneCurve, "tone curve: aces, reinhard, clamp")->capture_default_str();

@@ -16,7 +16,8 @@ Aov parseAov(const std::string& name) {
     if (name == "depth") return Aov::Depth;
     if (name == "indirect") return Aov::Indirect;
     if (name == "ao") return Aov::Ao;
-    fail("unknown --aov '", name, "'; use final, direct, indirect, ao, albedo, normal or depth");
+    if (name == "gi") return Aov::Gi;
+    fail("unknown --aov '", name, "'; use final, direct, gi, indirect, ao, albedo, normal or depth");
 }
 
 const char* aovName(Aov aov) {
@@ -28,6 +29,7 @@ const char* aovName(Aov aov) {
         case Aov::Depth: return "depth";
         case Aov::Indirect: return "indirect";
         case Aov::Ao: return "ao";
+        case Aov::Gi: return "gi";
     }
     return "?";
 }

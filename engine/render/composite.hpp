@@ -10,7 +10,7 @@
 
 namespace vct {
 
-enum class Aov { Final, Direct, Albedo, Normal, Depth, Indirect, Ao };
+enum class Aov { Final, Direct, Albedo, Normal, Depth, Indirect, Ao, Gi };
 // The tone curves are core/tonemap.hpp's (its order matches shaders/tonemap.glsl's constants).
 using ToneCurve = TonemapCurve;
 

@@ -226,11 +226,11 @@ void settingsSection(ViewerState& state, bool& changed) {
         changed = true;
     }
 
-    static const Aov aovs[] = {Aov::Final, Aov::Direct, Aov::Indirect, Aov::Ao, Aov::Albedo, Aov::Normal, Aov::Depth};
+    static const Aov aovs[] = {Aov::Final, Aov::Direct, Aov::Indirect, Aov::Ao, Aov::Albedo, Aov::Normal, Aov::Depth, Aov::Gi};
     static const char* const aovNames[] = {"final (1)", "direct (2)", "indirect (3)", "ao (4)",
-                                           "albedo (5)", "normal (6)", "depth"};
+                                           "albedo (5)", "normal (6)", "depth", "gi (final - direct)"};
     int aov = int(std::find(std::begin(aovs), std::end(aovs), s.display.aov) - std::begin(aovs));
-    if (comboOf("output", aov, aovNames, 7)) {
+    if (comboOf("output", aov, aovNames, 8)) {
         s.display.aov = aovs[aov];
         changed = true;
     }
