@@ -57,9 +57,9 @@ for i in "${!probes[@]}"; do
   done
 done
 /usr/bin/python3 - "$work" "$out" "${#probes[@]}" "${probes[@]}" "${cones[@]}" <<'PY'
-import datetime, math, sys
+import math, sys
 sys.path.insert(0, "benchmarks")
-from report import luminance, read_pfm, renderer_of, write_report
+from report import luminance, read_pfm, renderer_of, report_head, write_report
 work, out, count = sys.argv[1], sys.argv[2], int(sys.argv[3])
 probes, cones = sys.argv[4:4 + count], sys.argv[4 + count:]
 
@@ -83,13 +83,12 @@ def expected(i, j):  # the solid-angle mean of the direct AOV inside the cone
     return total / weight
 
 renderer, tag = renderer_of(f"{work}/t.json")
-names = [c.split("|")[0] for c in cones]
-lines = ["# What one cone sees", "",
-         f"Renderer: {renderer}, measured {datetime.date.today()} by `bash benchmarks/cone_fidelity.sh`. One cone "
-         "(`vct render --view cones`, the centre pixel of a 2° view) from the eye along the direction, against the mean "
-         "over the same cone of the radiance `--aov direct` shows (what one bounce reflects): the ratio, then both values "
-         "(luminance, W/(m²·sr)). 256³ unless the scene says otherwise; every other setting at its default.", "",
-         "| probe (eye, direction) | " + " | ".join(names) + " |", "|---|" + "---|" * len(names)]
+lines = report_head("What one cone sees", renderer, "cone_fidelity.sh",
+                    "One cone (`vct render --view cones`, the centre pixel of a 2° view) from the eye along the "
+                    "direction, against the mean over the same cone of the radiance `--aov direct` shows (what one "
+                    "bounce reflects): the ratio, then both values (luminance, W/(m²·sr)). 256³ unless the scene says "
+                    "otherwise; every other setting at its default.",
+                    ["probe (eye, direction)"] + [c.split("|")[0] for c in cones])
 for i, probe in enumerate(probes):
     name, _, eye, direction = probe.split("|")
     cells = []

@@ -4,8 +4,9 @@
 # light arriving in that cone's region of the hemisphere (`vct reference --cone-region K`),
 # grouped by where the cone points in the world: ring cones more than 30° below the horizon
 # (looking down at the floor), within 30° of it (across), above; the cap (the cone along the
-# normal) on walls and on ceilings. An image mean can be right while its cones are not.
-#   bash benchmarks/cone_regions.sh          (about 10 minutes on llvmpipe)
+# normal) on walls and on ceilings. An image mean can be right while its cones are not. The same
+# for 16 narrow cones (`--cone-rays 16 --only-cone K`: those whose axes lie in cone K's region).
+#   bash benchmarks/cone_regions.sh          (about 15 minutes on llvmpipe)
 # Writes benchmarks/results/cone_regions_<renderer>.md. Sponza comes from the asset search path.
 source "$(dirname "$0")/scratch_setup.sh"
 views=("cornell|--scene cornell --width 320 --height 240"
@@ -13,6 +14,7 @@ views=("cornell|--scene cornell --width 320 --height 240"
        "CameraAlternate|--scene sponza --camera CameraAlternate --width 320 --height 180"
        "CameraBalcony|--scene sponza --camera CameraBalcony --width 320 --height 180"
        "CameraAlcove|--scene sponza --camera CameraAlcove --width 320 --height 180")
+settings=("5-cone set|" "16 narrow cones|--cone-rays 16")
 for entry in "${views[@]}"; do
   name=${entry%%|*}
   read -r -a options <<< "${entry#*|}"
@@ -21,32 +23,23 @@ for entry in "${views[@]}"; do
     --timings "$work/timings.json"
   ./build/vct -q render "${options[@]}" --aov normal --hdr-out "$work/$name-normal.pfm" --out "$work/x.png"
   for cone in 0 1 2 3 4; do
-    ./build/vct -q render "${options[@]}" --only-cone "$cone" --hdr-out "$work/$name-engine$cone.pfm" --out "$work/x.png"
+    for s in "${!settings[@]}"; do
+      read -r -a extra <<< "${settings[$s]#*|}"
+      ./build/vct -q render "${options[@]}" "${extra[@]}" --only-cone "$cone" --aov gi \
+        --hdr-out "$work/$name-engine$s-$cone.pfm" --out "$work/x.png"
+    done
     ./build/vct -q reference "${options[@]}" --spp 256 --bounces 1 --cones 5 --cone-region "$cone" \
       --out "$work/x.pfm" --indirect-out "$work/$name-reference$cone.pfm"
   done
 done
 names=()
 for entry in "${views[@]}"; do names+=("${entry%%|*}"); done
-/usr/bin/python3 - "$work" "$out" "${names[@]}" <<'PY'
-import array, datetime, json, math, sys
+/usr/bin/python3 - "$work" "$out" "${#settings[@]}" "${settings[@]}" "${names[@]}" <<'PY'
+import math, sys
 sys.path.insert(0, "benchmarks")
-from report import renderer_of, write_report
-work, out, names = sys.argv[1], sys.argv[2], sys.argv[3:]
-
-def read_pfm(path):
-    with open(path, "rb") as f:
-        assert f.readline().strip() == b"PF", path
-        width, height = map(int, f.readline().split())
-        scale = float(f.readline())
-        data = array.array("f")
-        data.frombytes(f.read())
-    if (scale < 0) != (sys.byteorder == "little"):
-        data.byteswap()
-    return width, height, data
-
-def luminance(d, i):
-    return 0.2126 * d[3 * i] + 0.7152 * d[3 * i + 1] + 0.0722 * d[3 * i + 2]
+from report import luminance, read_pfm, renderer_of, report_head, write_report
+work, out, count = sys.argv[1], sys.argv[2], int(sys.argv[3])
+settings, names = [s.split("|")[0] for s in sys.argv[4:4 + count]], sys.argv[4 + count:]
 
 # The 5-cone set (render/cone_set.cpp): the cap and a ring of 4 at sin²θ = 0.6, azimuths j·90°.
 ring_sin, ring_cos = math.sqrt(0.6), math.sqrt(0.4)
@@ -54,47 +47,45 @@ groups = ["ring, down", "ring, across", "ring, up", "cap on walls", "cap on ceil
 rows = []
 for name in names:
     width, height, normal = read_pfm(f"{work}/{name}-normal.pfm")
-    _, _, direct = read_pfm(f"{work}/{name}-direct.pfm")
-    engine = [read_pfm(f"{work}/{name}-engine{k}.pfm")[2] for k in range(5)]
     reference = [read_pfm(f"{work}/{name}-reference{k}.pfm")[2] for k in range(5)]
-    sums = {g: [0.0, 0.0] for g in groups}
-    for i in range(width * height):
-        nx, ny, nz = normal[3 * i], normal[3 * i + 1], normal[3 * i + 2]
-        length = math.sqrt(nx * nx + ny * ny + nz * nz)
-        if length < 0.5:
-            continue  # sky
-        nx, ny, nz = nx / length, ny / length, nz / length
-        # The engine's tangent frame (shaders/math.glsl orthonormalBasis); only its y matters here.
-        s = 1.0 if nz >= 0.0 else -1.0
-        a = -1.0 / (s + nz)
-        b = nx * ny * a
-        tangent_y, bitangent_y = s * b, s + ny * ny * a
-        base = luminance(direct, i)  # every engine image holds the direct light as well
-        for k in range(5):
-            if k == 0:
-                group = "cap on walls" if abs(ny) <= 0.5 else ("cap on floors" if ny > 0.0 else "cap on ceilings")
-            else:
-                cosine, sine = [(1, 0), (0, 1), (-1, 0), (0, -1)][k - 1]
-                axis_y = ring_sin * (cosine * tangent_y + sine * bitangent_y) + ring_cos * ny
-                group = "ring, down" if axis_y < -0.5 else ("ring, up" if axis_y > 0.5 else "ring, across")
-            sums[group][0] += luminance(engine[k], i) - base
-            sums[group][1] += luminance(reference[k], i)
-    total = sum(r for _, r in sums.values())
-    cells = []
-    for g in groups:
-        e, r = sums[g]
-        cells.append(f"{e / r:.2f} ({100.0 * r / total:.0f} %)" if r > 0.01 * total else "–")
-    engine_total = sum(e for e, _ in sums.values())
-    rows.append(f"| {name} | {engine_total / total:.2f} | " + " | ".join(cells) + " |")
+    for index, setting in enumerate(settings):
+        engine = [read_pfm(f"{work}/{name}-engine{index}-{k}.pfm")[2] for k in range(5)]
+        sums = {g: [0.0, 0.0] for g in groups}
+        for i in range(width * height):
+            nx, ny, nz = normal[i]
+            length = math.sqrt(nx * nx + ny * ny + nz * nz)
+            if length < 0.5:
+                continue  # sky
+            nx, ny, nz = nx / length, ny / length, nz / length
+            # The engine's tangent frame (shaders/math.glsl orthonormalBasis); only its y matters here.
+            s = 1.0 if nz >= 0.0 else -1.0
+            a = -1.0 / (s + nz)
+            b = nx * ny * a
+            tangent_y, bitangent_y = s * b, s + ny * ny * a
+            for k in range(5):
+                if k == 0:
+                    group = "cap on walls" if abs(ny) <= 0.5 else ("cap on floors" if ny > 0.0 else "cap on ceilings")
+                else:
+                    cosine, sine = [(1, 0), (0, 1), (-1, 0), (0, -1)][k - 1]
+                    axis_y = ring_sin * (cosine * tangent_y + sine * bitangent_y) + ring_cos * ny
+                    group = "ring, down" if axis_y < -0.5 else ("ring, up" if axis_y > 0.5 else "ring, across")
+                sums[group][0] += luminance(engine[k][i])
+                sums[group][1] += luminance(reference[k][i])
+        total = sum(r for _, r in sums.values())
+        cells = []
+        for g in groups:
+            e, r = sums[g]
+            cells.append(f"{e / r:.2f} ({100.0 * r / total:.0f} %)" if r > 0.01 * total else "–")
+        engine_total = sum(e for e, _ in sums.values())
+        rows.append(f"| {name} | {setting} | {engine_total / total:.2f} | " + " | ".join(cells) + " |")
 
 renderer, tag = renderer_of(f"{work}/timings.json")
-lines = ["# Each cone's light against the path tracer's in its region", "",
-         f"Renderer: {renderer}, measured {datetime.date.today()} by `bash benchmarks/cone_regions.sh`. "
-         "Default settings (5 cones), 256³ voxels; `vct render --only-cone K` (final − direct) against `vct reference "
-         "--bounces 1 --spp 256 --cone-region K`, summed over the image by where cone K points in the world: ring "
-         "cones more than 30° below the horizon (down), within 30° of it (across) or above (up); the cap (the cone "
-         "along the normal) on walls, ceilings and floors. Each cell: engine / reference (the group's share of the "
-         "reference's indirect light).", "",
-         "| view | all | " + " | ".join(groups) + " |", "|---|---|" + "---|" * len(groups)] + rows
+lines = report_head("Each cone's light against the path tracer's in its region", renderer, "cone_regions.sh",
+                    "256³ voxels, the 5-cone set and 16 narrow cones; `vct render --only-cone K --aov gi` against "
+                    "`vct reference --bounces 1 --spp 256 --cone-region K`, summed over the image by where cone K "
+                    "points in the world: ring cones more than 30° below the horizon (down), within 30° of it (across) "
+                    "or above (up); the cap (the cone along the normal) on walls, ceilings and floors. Each cell: "
+                    "engine / reference (the group's share of the reference's indirect light).",
+                    ["view", "cones", "all"] + groups) + rows
 write_report(f"{out}/cone_regions_{tag}.md", lines)
 PY

@@ -35,9 +35,9 @@ for i in "${!views[@]}"; do
   done
 done
 /usr/bin/python3 - "$work" "$out" "${#views[@]}" "${#settings[@]}" "${views[@]}" "${settings[@]}" <<'PY'
-import datetime, json, math, sys
+import json, math, sys
 sys.path.insert(0, "benchmarks")
-from report import luminance, read_pfm, renderer_of, write_report
+from report import luminance, read_pfm, renderer_of, report_head, write_report
 work, out, view_count, setting_count = sys.argv[1], sys.argv[2], int(sys.argv[3]), int(sys.argv[4])
 views = sys.argv[5:5 + view_count]
 settings = sys.argv[5 + view_count:5 + view_count + setting_count]
@@ -60,14 +60,12 @@ def metrics(engine, direct, reference):
                 cells.append(sum(le[k] for k in idx) / len(idx) / ref)
     return sum(le) / sum(lr), min(cells), max(cells), rmse
 
-header = [s.split("|")[0] for s in settings]
 renderer, tag = renderer_of(f"{work}/t.json")
-lines = ["# Narrow cones against the cone set", "",
-         f"Renderer: {renderer}, measured {datetime.date.today()} by `bash benchmarks/narrow_cones.sh`. Indirect part (final − direct AOV) "
-         "against `vct reference --bounces 1 --spp 512` (its indirect part): mean ratio [3×3 cells whose reference "
-         "exceeds 5 % of the image's mean], indirect RMSE, image SSIM (`vct compare`). 256³, every other setting at "
-         "its default.", "",
-         "| view | " + " | ".join(header) + " |", "|---|" + "---|" * len(header)]
+lines = report_head("Narrow cones against the cone set", renderer, "narrow_cones.sh",
+                    "Indirect part (final − direct AOV) against `vct reference --bounces 1 --spp 512` (its indirect "
+                    "part): mean ratio [3×3 cells whose reference exceeds 5 % of the image's mean], indirect RMSE, "
+                    "image SSIM (`vct compare`). 256³, every other setting at its default.",
+                    ["view"] + [s.split("|")[0] for s in settings])
 for i, view in enumerate(views):
     name = view.split("|")[0]
     row = []

@@ -1,6 +1,7 @@
 """What the benchmark scripts' reports share: the renderer named in a `vct render --timings` file,
 the short tag of a results file's name, reading the images vct writes (PFM), and writing the
 report (also to stdout)."""
+import datetime
 import json
 import struct
 import sys
@@ -11,6 +12,14 @@ def renderer_of(timings_path):
     renderer = json.load(open(timings_path))["renderer"]
     tag = "llvmpipe" if "llvmpipe" in renderer else renderer.split()[0].lower()
     return renderer, tag
+
+
+def report_head(title, renderer, script, description, columns):
+    """The lines every report starts with: its title, the renderer and date and the script that
+    measured it with what it measures, and the head of its table (`columns`: the header cells)."""
+    return [f"# {title}", "",
+            f"Renderer: {renderer}, measured {datetime.date.today()} by `bash benchmarks/{script}`. {description}", "",
+            "| " + " | ".join(columns) + " |", "|" + "---|" * len(columns)]
 
 
 def write_report(path, lines):

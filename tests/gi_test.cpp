@@ -363,25 +363,33 @@ TEST(Gi, SameCommandTwiceIsBitIdentical) {
 }
 
 // `--only-cone K` (the diagnostic partner of `vct reference --cone-region K`): each cone gathers
-// alone what it gathers in the whole set, so without the edge-aware filter (which clamps to its
-// taps' range, not linear) the five images add up to the whole set's irradiance.
+// alone what it gathers in the whole set, and with narrow cones (`--cone-rays`) those whose axes
+// lie in cone K's region do, so without the edge-aware filter (which clamps to its taps' range,
+// not linear) the five images add up to the whole set's irradiance.
 TEST(Gi, OnlyConeImagesAddUpToTheWholeSet) {
     const auto dir = test::testDir();
-    const std::string common = "--scene cornell --width 48 --height 36 --voxel-levels 6 --gi-filter 0 --aov indirect";
-    const ImageF whole = renderCli(dir, "all", common);
-    std::vector<float> sum(whole.rgba.size(), 0.0f);
-    for (int cone = 0; cone < 5; ++cone) {
-        const ImageF part = renderCli(dir, "cone" + std::to_string(cone), common + " --only-cone " + std::to_string(cone));
-        for (std::size_t i = 0; i < sum.size(); ++i) sum[i] += part.rgba[i];
-    }
-    double worst = 0.0, largest = 0.0;
-    for (std::size_t i = 0; i < sum.size(); i += 4)
-        for (int c = 0; c < 3; ++c) {
-            worst = std::max(worst, double(std::abs(sum[i + c] - whole.rgba[i + c])));
-            largest = std::max(largest, double(whole.rgba[i + c]));
+    for (const std::string cones : {"", " --cone-rays 12"}) {
+        const std::string common =
+            "--scene cornell --width 48 --height 36 --voxel-levels 6 --gi-filter 0 --aov indirect" + cones;
+        const ImageF whole = renderCli(dir, "all", common);
+        std::vector<float> sum(whole.rgba.size(), 0.0f);
+        int regionsWithLight = 0;
+        for (int cone = 0; cone < 5; ++cone) {
+            const ImageF part = renderCli(dir, "cone" + std::to_string(cone), common + " --only-cone " + std::to_string(cone));
+            double partSum = 0.0;
+            for (std::size_t i = 0; i < sum.size(); ++i) sum[i] += part.rgba[i], partSum += (i % 4 == 3 ? 0.0 : part.rgba[i]);
+            regionsWithLight += partSum > 0.0 ? 1 : 0;
         }
-    EXPECT_GT(largest, 0.0);
-    EXPECT_LT(worst, 1e-5 * largest) << "largest irradiance " << largest;
+        double worst = 0.0, largest = 0.0;
+        for (std::size_t i = 0; i < sum.size(); i += 4)
+            for (int c = 0; c < 3; ++c) {
+                worst = std::max(worst, double(std::abs(sum[i + c] - whole.rgba[i + c])));
+                largest = std::max(largest, double(whole.rgba[i + c]));
+            }
+        EXPECT_GT(largest, 0.0) << cones;
+        EXPECT_EQ(regionsWithLight, 5) << cones;
+        EXPECT_LT(worst, 1e-5 * largest) << cones << ": largest irradiance " << largest;
+    }
     const auto bad = test::runVct("render -q --scene cornell --width 8 --height 8 --only-cone 5 --out " +
                                   (dir / "x.png").string());
     EXPECT_EQ(bad.exitCode, 1);

@@ -46,8 +46,9 @@ void addRenderSettingsOptions(CLI::App& command, RenderSettingsOptions& o) {
                        "closer to the path tracer, about 16x the cone-tracing time at 16")
         ->capture_default_str();
     command.add_option("--only-cone", o.cones.onlyCone,
-                       "diagnostic: only cone K of the set gathers light (0 = the cone along the normal; compare with "
-                       "vct reference --cone-region K); -1: every cone")
+                       "diagnostic: only cone K of the set gathers light (0 = the cone along the normal; with "
+                       "--cone-rays the narrow cones in its region of the hemisphere; compare with vct reference "
+                       "--cone-region K); -1: every cone")
         ->capture_default_str();
     command.add_option("--gi-resolution", o.giResolution,
                        "half: cones at one pixel of each 2x2 block, the others take the irradiance of traced "

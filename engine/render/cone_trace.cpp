@@ -90,8 +90,6 @@ void validateConeSettings(const ConeSettings& s) {
         fail("--cone-lift ", s.lift, " is out of range; use 0..4 (normal offset per unit of cone diameter)");
     if (s.rays < 0 || s.rays > kMaxNarrowCones)
         fail("--cone-rays ", s.rays, " is out of range; use 1..", kMaxNarrowCones, " narrow cones (0: the cone set)");
-    if (s.rays != 0 && s.onlyCone != -1)
-        fail("--only-cone picks a cone of the cone set; it cannot be combined with --cone-rays");
     if (s.onlyCone < -1 || s.onlyCone >= s.cones)
         fail("--only-cone ", s.onlyCone, " is not a cone of the ", s.cones, "-cone set; use 0..", s.cones - 1,
              " (0 is the cone along the normal)");

@@ -6,6 +6,7 @@
 #include "gl/objects.hpp"
 #include "lighting/radiance_volume.hpp"
 #include "render/cone_trace.hpp"
+#include "render/eye_rays.hpp"
 #include "scene/camera.hpp"
 #include "scene/scene.hpp"
 #include "voxel/octree.hpp"
@@ -24,11 +25,10 @@ public:
     void render(const Octree& octree, const RadianceVolume& radiance, const Camera& camera, const Scene& scene,
                 const ConeSettings& settings);
     GLuint image() const { return image_.id(); }
-    std::size_t bytes() const { return std::size_t(width_) * height_ * 16; }
+    std::size_t bytes() const { return image_.bytes(); }
 
 private:
-    int width_, height_;
-    gl::Texture image_;
+    EyeRayImage image_;
     gl::Program program_;
 };
 

@@ -5,6 +5,7 @@
 #include <glm/glm.hpp>
 
 #include "gl/compute.hpp"
+#include "gl/objects.hpp"
 #include "scene/camera.hpp"
 #include "scene/scene.hpp"
 #include "voxel/octree.hpp"
@@ -19,7 +20,20 @@ struct EyeRays {
 
 EyeRays eyeRaysInVoxels(const Octree& octree, const Camera& camera, const Scene& scene, int width, int height);
 
-// uEyeVoxel, uForward, uRight, uUp and uTanHalfFov on `call`.
-void setEyeRayUniforms(gl::ComputeCall& call, const EyeRays& rays);
+// The image a debug view marches its eye rays into: one RGBA32F texel per output pixel, bound at
+// gl::IMAGE_VOXEL_VIEW.
+class EyeRayImage {
+public:
+    EyeRayImage(int width, int height, const char* label);
+    // Sets the eye rays of `camera` (uEyeVoxel, uForward, uRight, uUp, uTanHalfFov) and the image
+    // on `call`, then runs it once per pixel.
+    void march(gl::ComputeCall& call, const Octree& octree, const Camera& camera, const Scene& scene) const;
+    GLuint id() const { return texture_.id(); }
+    std::size_t bytes() const { return std::size_t(width_) * height_ * 16; }
+
+private:
+    int width_, height_;
+    gl::Texture texture_;
+};
 
 }  // namespace vct

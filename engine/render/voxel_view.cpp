@@ -8,9 +8,7 @@
 namespace vct {
 
 VoxelView::VoxelView(int width, int height)
-    : width_(width),
-      height_(height),
-      image_(gl::createTexture2D(GL_RGBA32F, width, height, 1, "voxel view")),
+    : image_(width, height, "voxel view"),
       program_(gl::buildProgram({{GL_COMPUTE_SHADER, "voxel_view.comp"}})) {}
 
 void VoxelView::render(const Octree& octree, const RadianceVolume* radiance, const Camera& camera, const Scene& scene,
@@ -21,19 +19,17 @@ void VoxelView::render(const Octree& octree, const RadianceVolume* radiance, con
     gl::ComputeCall call(program_);
     octree.bind(call.program());
     setBrickPoolUniforms(call.program(), octree);
-    setEyeRayUniforms(call, eyeRaysInVoxels(octree, camera, scene, width_, height_));
     call.uniform("uViewLevel", level)
         .uniform("uUseBricks", useBricks ? 1 : 0)
         .uniform("uShowRadiance", radiance ? 1 : 0)
         .texture(gl::TEXTURE_VIEW_ALBEDO_BRICKS, octree.brickAlbedo.id())
         .storage(gl::SSBO_CELL_VALUES, octree.cellAlbedo)
-        .storage(gl::SSBO_RAW_VALUE, octree.rawValue)
-        .image(gl::IMAGE_VOXEL_VIEW, image_.id(), GL_WRITE_ONLY, GL_RGBA32F);
+        .storage(gl::SSBO_RAW_VALUE, octree.rawValue);
     if (radiance) {
         call.storage(gl::SSBO_CELL_RADIANCE, radiance->cellRadiance);
         bindDirectionalTexture(call, *radiance);
     }
-    call.dispatchImage(width_, height_, GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+    image_.march(call, octree, camera, scene);
 }
 
 }  // namespace vct

@@ -3,6 +3,7 @@
 // composited with opacity, from the filtered bricks or from raw node values (`--no-bricks`).
 #include "gl/objects.hpp"
 #include "lighting/radiance_volume.hpp"
+#include "render/eye_rays.hpp"
 #include "render/view.hpp"
 #include "voxel/octree.hpp"
 
@@ -15,11 +16,10 @@ public:
     void render(const Octree& octree, const RadianceVolume* radiance, const Camera& camera, const Scene& scene,
                 int level, bool useBricks);
     GLuint image() const { return image_.id(); }
-    std::size_t bytes() const { return std::size_t(width_) * height_ * 16; }
+    std::size_t bytes() const { return image_.bytes(); }
 
 private:
-    int width_, height_;
-    gl::Texture image_;
+    EyeRayImage image_;
     gl::Program program_;
 };
 

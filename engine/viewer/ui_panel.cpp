@@ -210,7 +210,6 @@ void settingsSection(ViewerState& state, bool& changed) {
     }
     changed |= ImGui::SliderInt("narrow cones per pixel (C; 0 = the cone set)", &s.cones.rays, 0, kMaxNarrowCones, "%d",
                                 ImGuiSliderFlags_AlwaysClamp);
-    if (s.cones.rays > 0) s.cones.onlyCone = -1;  // --only-cone picks a cone of the set, none is traced now
     changed |= ImGui::SliderFloat("GI filter (voxels, 0 = off)", &s.giFilter, 0.0f, 16.0f, "%.1f",
                                   ImGuiSliderFlags_AlwaysClamp);
 

@@ -188,7 +188,6 @@ private:
                 break;
             case Action::ToggleNarrowCones:
                 s.cones.rays = s.cones.rays > 0 ? 0 : kDefaultNarrowCones;
-                if (s.cones.rays > 0) s.cones.onlyCone = -1;  // a cone of the set: none is traced now
                 status(s.cones.rays > 0 ? concat(s.cones.rays, " narrow cones per pixel") : concat(s.cones.cones, "-cone set"));
                 break;
             case Action::ToggleVoxelView:
