@@ -10,6 +10,7 @@
 #include "directional_pool.glsl"
 #include "octree_march.glsl"
 #include "cone_spread.glsl"
+#include "cone_regions.glsl"
 
 // What lies ahead of each brick sample along each of the six axis directions (brick_layout.hpp,
 // "Slabs"; directional_pool.glsl): the radiance that reaches the sample and the slab's density,
@@ -333,32 +334,6 @@ vec2 hashToUnitSquare(vec3 p) {
     return vec2(float(h & 0xffffu), float(h >> 16)) / 65536.0;
 }
 
-// Which cone of the set (uConeCount cones, render/cone_set.cpp) owns the region of the
-// hemisphere that the tangent-space direction `local` lies in: the cap, then rings of equal
-// sectors centred on their cones' axes (the C++ twin is coneRegionOf, which the path tracer's
-// --cone-region uses). Lets `--only-cone K` pick the narrow cones of cone K's region.
-int coneRegionOf(vec3 local) {
-    float z = local.z / length(local);
-    float sin2 = max(1.0 - z * z, 0.0);
-    float share = 1.0 / float(uConeCount);
-    float outer = share;  // the cap
-    if (sin2 <= outer || uConeCount == 1) return 0;
-    int rings[2] = int[2](uConeCount == 16 ? 5 : uConeCount - 1, uConeCount == 16 ? 10 : 0);
-    int first = 1;
-    for (int ring = 0; ring < 2 && rings[ring] > 0; ++ring) {
-        int m = rings[ring];
-        outer += float(m) * share;
-        bool last = ring == 1 || rings[1] == 0;
-        if (sin2 <= outer || last) {
-            float sector = atan(local.y, local.x) * float(m) / (2.0 * PI) - 0.5 * float(ring);
-            int j = int(floor(sector + 0.5));
-            return first + ((j % m) + m) % m;
-        }
-        first += m;
-    }
-    return 0;
-}
-
 // Narrow cones instead of the cone set (`--cone-rays`): uRayCount cones, each of weight π/N,
 // whose axes sample the cosine-weighted hemisphere (sin²θ and azimuth uniform) on a Fibonacci
 // lattice, k/N against k/φ, shifted by an amount that changes from apex to apex. A cone a few
@@ -378,7 +353,7 @@ vec4 gatherNarrowCones(vec3 origin, vec3 normal, vec3 surfaceNormal) {
         float azimuth = 2.0 * PI * fract(float(k) * goldenFraction + shift.y);
         float sinTheta = sqrt(sin2);
         vec3 d = vec3(sinTheta * cos(azimuth), sinTheta * sin(azimuth), sqrt(max(1.0 - sin2, 0.0)));
-        if (uOnlyCone >= 0 && coneRegionOf(d) != uOnlyCone) continue;
+        if (uOnlyCone >= 0 && coneRegionOf(uConeCount, d) != uOnlyCone) continue;
         vec3 direction = normalize(d.x * tangent + d.y * bitangent + d.z * normal);
         vec4 cone = vec4(0.0, 0.0, 0.0, 1.0);
         if (dot(direction, surfaceNormal) > 0.0) {

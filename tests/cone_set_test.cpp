@@ -3,13 +3,21 @@
 // integration); cones stay inside the hemisphere.
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
 #include <map>
 #include <vector>
 
 #include <glm/gtc/constants.hpp>
 
 #include "core/error.hpp"
+#include "gl/compute.hpp"
+#include "gl/context.hpp"
+#include "gl/shader.hpp"
 #include "render/cone_set.hpp"
+#include "svo_readback.hpp"
 #include "test_util.hpp"
 
 using namespace vct;
@@ -118,4 +126,60 @@ TEST(ConeSet, TangentFrameIsOrthonormalAroundTheNormal) {
         EXPECT_NEAR(glm::dot(t, b), 0.0, 1e-5);
         EXPECT_NEAR(glm::dot(glm::cross(t, b), n), 1.0, 1e-5);
     }
+}
+
+TEST(ConeSet, TheShadersRegionsAreThePathTracers) {
+    // shaders/cone_regions.glsl (which cone's region a narrow cone lies in, for --only-cone) and
+    // coneRegionOf (the path tracer's --cone-region) must split the hemisphere alike, or a region's
+    // light would be compared with another region's. Directions on a Fibonacci hemisphere, for
+    // every set; those within 1e-4 rad of a region's border may round either way.
+    const auto dir = test::testDir();
+    for (const char* include : {"math.glsl", "cone_regions.glsl"})
+        std::filesystem::copy_file(gl::shaderDirectory() / include, dir / include,
+                                   std::filesystem::copy_options::overwrite_existing);
+    std::ofstream(dir / "cone_regions_probe.comp")
+        << "#version 450\nlayout(local_size_x = 64) in;\n#include \"math.glsl\"\n#include \"cone_regions.glsl\"\n"
+           "layout(std430, binding = SSBO_CONE_COUNTERS) buffer Cases { vec4 cases[]; };\n"
+           "uniform uint uCount;\n"
+           "void main() {\n"
+           "    uint i = gl_GlobalInvocationID.x;\n"
+           "    if (i >= uCount) return;\n"
+           "    cases[i].w = float(coneRegionOf(int(cases[i].w), cases[i].xyz));\n"
+           "}\n";
+    std::vector<glm::vec4> cases;
+    const int counts[] = {1, 5, 6, 9, 16};
+    const int directions = 4000;
+    for (int count : counts)
+        for (int i = 0; i < directions; ++i) {
+            const float z = 1.0f - (i + 0.5f) / directions, r = std::sqrt(1.0f - z * z), phi = 2.39996323f * i;
+            cases.push_back({r * std::cos(phi), r * std::sin(phi), z, float(count)});
+        }
+    auto context = gl::createContext(gl::defaultBackend());
+    setenv("VCT_SHADER_DIR", dir.c_str(), 1);
+    const gl::Program program = gl::buildProgram({{GL_COMPUTE_SHADER, "cone_regions_probe.comp"}});
+    unsetenv("VCT_SHADER_DIR");
+    const gl::Buffer buffer = gl::createBuffer(GLsizeiptr(cases.size() * sizeof(glm::vec4)), cases.data(),
+                                               GL_DYNAMIC_STORAGE_BIT, "cone region cases");
+    gl::ComputeCall(program)
+        .storage(gl::SSBO_CONE_COUNTERS, buffer)
+        .uniform("uCount", unsigned(cases.size()))
+        .dispatch1D(cases.size(), 64, GL_BUFFER_UPDATE_BARRIER_BIT);
+    const std::vector<glm::vec4> out = test::readBuffer<glm::vec4>(buffer, cases.size());
+    int disagreements = 0, nearBorder = 0;
+    for (std::size_t i = 0; i < cases.size(); ++i) {
+        const int count = int(cases[i].w);
+        const glm::vec3 d(cases[i]);
+        const int expected = coneRegionOf(count, d);
+        if (int(out[i].w) == expected) continue;
+        // Nudged by 1e-4 rad either way, does the C++ side give the shader's answer? Then the
+        // direction lies on a border.
+        bool border = false;
+        for (const glm::vec3 nudge : {glm::vec3(1e-4f, 0, 0), glm::vec3(0, 1e-4f, 0), glm::vec3(0, 0, 1e-4f)})
+            for (float s : {-1.0f, 1.0f})
+                border = border || coneRegionOf(count, glm::normalize(d + s * nudge)) == int(out[i].w);
+        (border ? nearBorder : disagreements) += 1;
+        EXPECT_TRUE(border) << count << " cones, direction (" << d.x << ", " << d.y << ", " << d.z << "): shader "
+                            << out[i].w << ", path tracer " << expected;
+    }
+    std::printf("[ regions  ] %zu directions: %d on a border, %d disagreements\n", cases.size(), nearBorder, disagreements);
 }
