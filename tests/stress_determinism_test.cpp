@@ -88,7 +88,7 @@ std::vector<std::pair<std::string, std::vector<std::uint8_t>>> imageSnapshot(con
     RenderSettings settings = smallSettings(64, 48, 6, 512);
     Renderer renderer(scene, settings);
     std::vector<std::pair<std::string, std::vector<std::uint8_t>>> images;
-    for (Aov aov : {Aov::Final, Aov::Direct, Aov::Indirect, Aov::Ao, Aov::Albedo, Aov::Normal, Aov::Depth}) {
+    for (Aov aov : {Aov::Final, Aov::Direct, Aov::Indirect, Aov::Ao, Aov::Albedo, Aov::Normal, Aov::Depth, Aov::Gi}) {
         settings.display.aov = aov;
         renderer.setSettings(settings);
         renderer.renderFrame(scene.cameras[0]);
@@ -114,6 +114,14 @@ std::vector<std::pair<std::string, std::vector<std::uint8_t>>> imageSnapshot(con
                                     " level " + std::to_string(level),
                                 bytesOf(renderer.readHdr()));
         }
+    }
+    settings.view = ViewMode::Cones;
+    settings.voxelViewLevel = 0;
+    for (int rays : {0, 1}) {
+        settings.cones.rays = rays;
+        renderer.setSettings(settings);
+        renderer.renderFrame(scene.cameras[0]);
+        images.emplace_back(std::string("cone view, ") + (rays ? "narrow" : "cap of the set"), bytesOf(renderer.readHdr()));
     }
     return images;
 }
