@@ -9,6 +9,8 @@ layout(local_size_x = 64) in;
 // bounce: L_k = L₀ + ρ/π·E[L_{k−1}].
 // The lit-side direction follows the same bookkeeping as photons (facing.glsl): the sum of the
 // radiance sent to the front minus that sent to the back, over the whole, along the normal.
+// Sixteen storage blocks at most (GL's least per compute shader): the gather needs no border lists.
+#define RADIANCE_WITHOUT_BORDER_LISTS
 #include "cone_march.glsl"
 #include "radiance_common.glsl"
 

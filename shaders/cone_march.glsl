@@ -10,6 +10,8 @@
 #include "directional_pool.glsl"
 #include "octree_march.glsl"
 #include "cone_spread.glsl"
+#include "cell_radiance.glsl"
+#include "facing.glsl"
 #include "cone_regions.glsl"
 
 // What lies ahead of each brick sample along each of the six axis directions (brick_layout.hpp,
@@ -38,6 +40,12 @@ uniform float uRayTanHalfAngle;
 uniform int uRayFirst, uRayEnd;
 uniform vec3 uVoxelOrigin;
 uniform float uVoxelScale;
+// Narrow cones thinner than a voxel read the voxels themselves (sampleVoxels) while they hold the
+// light the bricks hold (one bounce: the bounce pass leaves the voxels at the first).
+uniform int uReadVoxels;
+uniform int uConeHasEmissive;
+layout(std430, binding = SSBO_CELL_OPACITY) buffer ConeCellOpacity { uint coneCellOpacity[]; };  // (αx, αy, αz, α)
+layout(std430, binding = SSBO_CELL_EMISSIVE) buffer ConeCellEmissive { vec4 coneCellEmissive[]; };
 
 // The cone being traced: its axis, and E[max(±d_a, 0)] per axis over its directions
 // (cone_spread.glsl).
@@ -194,6 +202,48 @@ bool readsStayInside(vec3 p, int coarseLevel, vec3 lo, float size) {
     return inside;
 }
 
+// What a narrow cone thinner than a voxel sees at p: the voxels themselves. Each direction i (±a)
+// reads the voxel window one voxel long ahead of p along it, [p, p ± 1] along a, as a leaf slab
+// does, but only the column p lies in: the voxel holding p and the next along ±a, each weighted by
+// its share of the window, with its opacity along a and the share of its light that leaves
+// towards the cone (facing.glsl), (L·f·τ, τ) with τ = −ln(1 − α_a). The leaf bricks a wider cone
+// reads average 2×2 voxels across each slab and are interpolated between voxel corners: a ray
+// through them sees a gap of two voxels half closed and a sunlit strip two voxels wide spread
+// over four, where the voxels hold both sharp. `leaf` is p's leaf node.
+vec4 voxelSeen(uint voxel, int i, float share) {
+    if (voxel == NONE || share <= 0.0) return vec4(0.0);
+    uint index = voxel - uLevelStart[uLevels];
+    float alpha = min(unpackUnorm4x8(coneCellOpacity[index])[i >> 1], MAX_OPACITY);
+    if (alpha <= 0.0) return vec4(0.0);
+    float tau = -log(1.0 - alpha);
+    vec4 stored = cellRadiance[index];
+    vec3 radiance = stored.a > 0.0 ? stored.rgb / stored.a : vec3(0.0);
+    float emittedShare = uConeHasEmissive != 0 ? clamp(dot(coneCellEmissive[index].rgb, vec3(1.0)) /
+                                                           max(dot(radiance, vec3(1.0)), 1e-30), 0.0, 1.0)
+                                               : 0.0;
+    float f = facingShare(cellDirection[index], emittedShare, poolDirection(i));
+    return share * vec4(radiance * f * tau, tau);
+}
+
+vec4 sampleVoxels(vec3 p, uint leaf) {
+    uvec3 cell = uvec3(clamp(floor(p), vec3(0.0), vec3(float((1 << uLevels) - 1))));
+    uint own = childOf(leaf, childSlot(cell));
+    vec3 inCell = p - vec3(cell);
+    vec4 value = vec4(0.0);
+    for (int i = 0; i < 6; ++i) {
+        int a = i >> 1;
+        bool along = (i & 1) == 0;
+        float weight = along ? coneAlongPlus[a] : coneAlongMinus[a];
+        if (weight <= NEGLIGIBLE_SHARE) continue;
+        float ownShare = along ? 1.0 - inCell[a] : inCell[a];  // of the window, inside p's voxel
+        vec3 q = vec3(cell) + 0.5;
+        q[a] += along ? 1.0 : -1.0;
+        uint next = nodeAhead(q, uLevels, cell, leaf, uLevels - 1, 2 * a + (along ? 1 : 0));
+        value += weight * (voxelSeen(own, i, ownShare) + voxelSeen(next, i, 1.0 - ownShare));
+    }
+    return value;
+}
+
 // The node a cone's last sample descended through one level above its coarser sampled level
 // (descentLevel: its level, descentCoord: its coordinate there). Consecutive samples of a cone lie
 // half a footprint apart, so the next one usually lies in the same node, and its descent resumes
@@ -259,6 +309,10 @@ bool sampleRadiance(vec3 p, float lod, vec3 origin, vec3 invDirection, out vec4 
     // from pixel to pixel, average out anyway; one level halves their lookups.
     if (uRayCount > 0) {
         const int k = fineLevel == coarseLevel || blend >= 0.5 ? 1 : 0;
+        if (uReadVoxels != 0 && k == 0 && fineLevel == uLevels - 1 && fineNode != NONE) {
+            value = sampleVoxels(p, fineNode);
+            return true;
+        }
         value = sampleLevel(nodes[k], levels[k], finerNodes[k], p, cell, node, level - 1);
         return true;
     }

@@ -10,10 +10,7 @@ layout(std430, binding = SSBO_TOUCHED_LIST) buffer TouchedList { uint touchedLis
 layout(std430, binding = SSBO_BORDER_FLAG) buffer BorderFlag { uint borderFlag[]; };
 layout(std430, binding = SSBO_BORDER_LIST) buffer BorderList { uint borderList[]; };
 #endif
-layout(std430, binding = SSBO_CELL_RADIANCE) buffer CellRadiance { vec4 cellRadiance[]; };  // premultiplied (L·τ, τ)
-// The mean lit-side normal of the voxel's reflected light (radiance_normalize), premultiplied
-// (N·τ, τ); bound at SSBO_CELL_RADIANCE in place of CellRadiance when the brick passes filter it.
-layout(std430, binding = SSBO_CELL_DIRECTION) buffer CellDirection { vec4 cellDirection[]; };
+#include "cell_radiance.glsl"
 
 const uint BORDER_COUNTS = BORDER_COUNT_SLOT;
 const uint MISSED_COUNT = MISSED_COUNT_SLOT;

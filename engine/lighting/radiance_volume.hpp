@@ -41,6 +41,9 @@ struct RadianceVolume {
     // at run time costs llvmpipe about twice the lookup.
     gl::Texture directional;
     glm::ivec3 directionalBricks{1};
+    // How many bounces of light the radiance bricks hold: 1 after the radiance filter, more after
+    // the bounce pass. The voxels' own radiance (cellRadiance) always holds the first.
+    int bricksBounces = 1;
     // The geometry bricks (Octree::geometryBricksBuild) over whose density every node outside the
     // border lists holds no light (shaders/radiance_clear.comp); 0: none yet. While they are the
     // octree's, a new filtering only has to clear the bricks of the last one's border nodes.

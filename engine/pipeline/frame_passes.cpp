@@ -124,12 +124,12 @@ void gatherBounces(FrameResources& f) {
     if (!f.bounces) f.bounces = std::make_unique<BounceGather>();
     // The gather starts from one bounce: after an earlier run (other cone settings) the bricks hold
     // more, and the voxels still hold one, so filtering them again gives it back.
-    if (f.radianceBounces != 1) {
+    if (f.radiance->bricksBounces != 1) {
         f.radianceFilter->leaves(f.svo->octree(), *f.radiance);
         f.radianceFilter->mip(f.svo->octree(), *f.radiance);
     }
     f.bounces->run(f.svo->octree(), *f.radiance, *f.radianceFilter, f.settings.bounces, frameCones(f.settings));
-    f.radianceBounces = f.settings.bounces;
+    f.radiance->bricksBounces = f.settings.bounces;
     f.statistics.bouncesGathered = std::uint32_t(f.settings.bounces - 1);
     f.statistics.bounceOwnGathers = f.bounces->ownGathers(*f.radiance);
 }
@@ -218,7 +218,7 @@ const PassTable kFramePasses = {{
      "radiance_mip.comp",
      [](FrameResources& f, const FrameView&) {
          f.radianceFilter->mip(f.svo->octree(), *f.radiance);
-         f.radianceBounces = 1;
+         f.radiance->bricksBounces = 1;
      }},
     {Pass::Bounce, "bounce", Stage::Radiance,
      {I::BounceSettings, I::ConeSettings}, {R::RadianceBricks, R::CellValues, R::CellRadiance}, {R::BouncedRadiance},
@@ -240,12 +240,14 @@ const PassTable kFramePasses = {{
                           v.sample);
      }},
     {Pass::ConeTrace, "cone_trace", Stage::Camera,
-     {I::ConeSettings, I::GiResolution, I::GiFilter}, {R::GBuffer, R::RadianceBricks, R::BouncedRadiance}, {R::IndirectIrradiance},
+     {I::ConeSettings, I::GiResolution, I::GiFilter},
+     {R::GBuffer, R::CellValues, R::CellRadiance, R::RadianceBricks, R::BouncedRadiance}, {R::IndirectIrradiance},
      unlessConeTrace,
      "cone_trace.comp, indirect_filter.comp, cone_upsample.comp",
      traceCones},
     {Pass::VoxelView, "voxel_view", Stage::Camera,
-     {I::Camera, I::OutputSize, I::ViewSettings, I::ConeSettings}, {R::GeometryBricks, R::RadianceBricks, R::BouncedRadiance},
+     {I::Camera, I::OutputSize, I::ViewSettings, I::ConeSettings},
+     {R::CellValues, R::GeometryBricks, R::CellRadiance, R::RadianceBricks, R::BouncedRadiance},
      {R::DebugImage},
      unlessVoxelView,
      "voxel_view.comp, cone_view.comp",

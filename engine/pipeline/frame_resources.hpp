@@ -48,7 +48,6 @@ struct FrameResources {
     std::unique_ptr<PhotonInjection> injection;
     std::unique_ptr<RadianceFilter> radianceFilter;
     std::unique_ptr<BounceGather> bounces;               // BouncedRadiance
-    int radianceBounces = 1;                             // bounces the radiance bricks hold now
     std::unique_ptr<GBuffer> gbuffer;                    // GBuffer
     std::unique_ptr<DirectLighting> direct;              // DirectRadiance
     std::unique_ptr<ConeTrace> coneTrace;                // IndirectIrradiance

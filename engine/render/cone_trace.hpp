@@ -64,7 +64,9 @@ GiResolution nextGiResolution(GiResolution resolution);
 void validateConeSettings(const ConeSettings& settings);
 
 // The uniforms and textures of shaders/cone_march.glsl on `call`: the octree, the brick layout,
-// the six radiance pools and the cone set with its aperture, step, offsets and reach.
+// the six radiance pools, the voxels' own light and opacity (which narrow cones thinner than a
+// voxel read while the bricks hold one bounce, as the voxels do) and the cone set with its
+// aperture, step, offsets and reach.
 void setConeMarchUniforms(gl::ComputeCall& call, const Octree& octree, const RadianceVolume& radiance,
                           const ConeSettings& settings);
 
