@@ -6,9 +6,10 @@ layout(local_size_x = 64) in;
 //   albedo: 8-bit channels summed in 32 bits (exact up to 16.8 M fragments per cell)
 //   normal: components × 127 summed as two's-complement 32-bit integers
 //   column partners: the bits of cellColumns (svo_leaves_normalize), or-ed
-//   area, emission, and (in uProjectedArea) the area projected along x, y, z (area·|n_a|; along
-//   the axis the triangle was projected on, the coverage of its column, voxelize.frag):
-//   64-bit fixed point (low word, then a carry into the high word)
+//   area, emission, and (in uProjectedArea) the area projected along x, y, z, apart for the faces
+//   facing +a and −a (area·|n_a|, on the side n_a points to; along the axis the triangle was
+//   projected on, the coverage of its column, voxelize.frag): 64-bit fixed point (low word, then a
+//   carry into the high word)
 #include "voxel_common.glsl"
 #include "octree.glsl"
 
@@ -16,7 +17,7 @@ layout(rgba32ui, binding = IMAGE_FRAGMENTS) uniform readonly uimageBuffer uFragm
 layout(r32ui, binding = IMAGE_FRAGMENT_NODE) uniform readonly uimageBuffer uFragmentNode;  // the fragment's cell node
 layout(std430, binding = SSBO_MATERIALS) buffer Materials { vec4 materials[]; };  // {baseColor, emissive} per material
 layout(r32ui, binding = IMAGE_CELL_ACCUMULATORS) uniform uimageBuffer uAccumulators;  // CELL_ACCUMULATOR_FIELDS per cell
-layout(r32ui, binding = IMAGE_PROJECTED_AREA) uniform uimageBuffer uProjectedArea;  // PROJECTED_AREA_FIELDS per cell: x, y, z, 64-bit each
+layout(r32ui, binding = IMAGE_PROJECTED_AREA) uniform uimageBuffer uProjectedArea;  // PROJECTED_AREA_FIELDS per cell: +x −x +y −y +z −z, 64-bit each
 
 uniform uint uFragmentCount;
 uniform int uHasEmissive;
@@ -48,7 +49,8 @@ void main() {
     imageAtomicAdd(uAccumulators, base + 5, uint(normal.y));
     imageAtomicAdd(uAccumulators, base + 6, uint(normal.z));
     add64(base + 7, uint(round(area * AREA_SCALE)));
-    vec3 projected = area * abs(unpackNormal(fragment.z));
+    vec3 faceNormal = unpackNormal(fragment.z);
+    vec3 projected = area * abs(faceNormal);
     uint column = fragment.y >> 24;
     projected[columnAxis(column)] = max(projected[columnAxis(column)], columnCoverage(column));
     if (columnCoverage(column) > 0.0) {
@@ -60,7 +62,8 @@ void main() {
     }
     for (int c = 0; c < 3; ++c) {
         uint value = uint(round(projected[c] * AREA_SCALE));
-        int index = int(cell) * PROJECTED_AREA_FIELDS + 2 * c;
+        if (value == 0u) continue;
+        int index = int(cell) * PROJECTED_AREA_FIELDS + 4 * c + (faceNormal[c] < 0.0 ? 2 : 0);
         uint old = imageAtomicAdd(uProjectedArea, index, value);
         if (old + value < old) imageAtomicAdd(uProjectedArea, index + 1, 1u);
     }

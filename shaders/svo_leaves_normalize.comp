@@ -49,11 +49,19 @@ void main() {
     cellAlbedo[cell] = packUnorm4x8(vec4(albedo, min(area, 1.0)));
     cellNormal[cell] = packNormal(dot(normal, normal) > 0.0 ? normalize(normal) : vec3(0.0, 0.0, 1.0));
     cellArea[cell] = area;
+    // Along each axis, the larger of the areas facing its two ways: a closed object's faces
+    // towards +a and towards −a each cover its silhouette, and their sum would count a rod, a
+    // baluster or a chain link twice as opaque as it is; a sheet open on both sides covers with
+    // its one side.
     vec3 projected;
     for (int c = 0; c < 3; ++c) {
-        int index = int(cell) * PROJECTED_AREA_FIELDS + 2 * c;
-        projected[c] = float((double(imageLoad(uProjectedArea, index).x) +
-                              4294967296.0lf * double(imageLoad(uProjectedArea, index + 1).x)) / AREA_SCALE);
+        double facing[2];
+        for (int side = 0; side < 2; ++side) {
+            int index = int(cell) * PROJECTED_AREA_FIELDS + 4 * c + 2 * side;
+            facing[side] = (double(imageLoad(uProjectedArea, index).x) +
+                            4294967296.0lf * double(imageLoad(uProjectedArea, index + 1).x)) / AREA_SCALE;
+        }
+        projected[c] = float(max(facing[0], facing[1]));
     }
     cellOpacity[cell] = packUnorm4x8(vec4(min(projected, vec3(1.0)), min(area, 1.0)));
     cellFragments[cell] = count;

@@ -395,3 +395,31 @@ TEST(Slabs, RadianceSeenFromTheDarkSideOfAWallIsDark) {
                     level, h, lit.size(), litMin, 100.0 * litMin / expected, darkWorst);
     }
 }
+
+TEST(Slabs, AThinClosedRodBlocksItsSilhouetteNotTwice) {
+    // A closed square rod 0.3 voxels thick inside one column of cells: a ray across it meets its
+    // near face and leaves through its far face, both in the same cell, and is blocked once: the
+    // cell's opacity across the rod is its silhouette, 0.3. Summing the areas the rod's faces
+    // project across it counted both faces (0.6): every baluster, rod and chain link at the
+    // voxels' scale blocked twice the light it does.
+    VoxelScene v{kWallLevels};
+    v.box({32.35, 32.35, 10.25}, {32.65, 32.65, 53.75});
+    const Scene scene = v.scene();
+    SvoHarness harness(scene);
+    int cells = 0;
+    glm::dvec2 lowest(1.0), highest(0.0);
+    for (const auto& [packed, alpha] : cellOpacityOf(harness.build(kWallLevels))) {
+        const glm::uvec3 c = unpackCell(packed);
+        if (c.z <= 10 || c.z >= 53) continue;  // the caps
+        ++cells;
+        lowest = glm::min(lowest, glm::dvec2(alpha));
+        highest = glm::max(highest, glm::dvec2(alpha));
+    }
+    std::printf("[ slabs    ] rod 0.3 voxels thick, %d cells: opacity across it %.3f..%.3f (x), %.3f..%.3f (y)\n", cells,
+                lowest.x, highest.x, lowest.y, highest.y);
+    EXPECT_EQ(cells, 42);
+    for (int a = 0; a < 2; ++a) {
+        EXPECT_NEAR(lowest[a], 0.3, 0.01) << "axis " << a;
+        EXPECT_NEAR(highest[a], 0.3, 0.01) << "axis " << a;
+    }
+}

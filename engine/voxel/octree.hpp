@@ -49,8 +49,9 @@ struct Octree {
     // Per cell, the cells beside it that hold the rest of one of its triangles' pixel columns
     // (bit 2a: below along axis a, 2a + 1: above; shaders/svo_leaves_normalize.comp).
     gl::Buffer cellColumns;
-    // Opacity by direction, RGBA8 per cell: (αx, αy, αz, α) with α_a = min(1, Σ area·|n_a|), the
-    // surface's area projected along axis a in voxel-face units, and α = min(1, Σ area).
+    // Opacity by direction, RGBA8 per cell: (αx, αy, αz, α) with α_a = min(1, max(A₊, A₋)), A±
+    // the area projected along axis a (voxel-face units) of the faces that face ±a (a closed
+    // object's silhouette, counted once), and α = min(1, Σ area).
     gl::Buffer cellOpacity;
     bool hasEmissive = false;
 
