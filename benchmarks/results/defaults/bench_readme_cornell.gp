@@ -2,34 +2,34 @@
 set terminal pngcairo size 2100,700 enhanced font 'DejaVu Sans,10'
 set output "bench_readme_cornell.png"
 $engine << EOD
-38.55 0.0709748 0.06987 "GI off"
-1753 0.0327495 0.0304686 "default"
+51.14 0.0709748 0.06987 "GI off"
+1973 0.0327749 0.0304961 "default"
 EOD
 $pathtracer << EOD
-10.68 0.152846 0.152266 "1"
-20.04 0.106638 0.105955 "2"
-40.45 0.0747809 0.0742655 "4"
-80.26 0.0533364 0.0529291 "8"
-161.9 0.0376246 0.0373476 "16"
-316.6 0.0264832 0.0262843 "32"
-654.5 0.0189356 0.0188115 "64"
-1310 0.0134033 0.0133121 "128"
-2606 0.0096764 0.00960391 "256"
+10.14 0.152846 0.152266 "1"
+20.73 0.106638 0.105955 "2"
+41.4 0.0747809 0.0742655 "4"
+82.38 0.0533364 0.0529291 "8"
+166.8 0.0376246 0.0373476 "16"
+333.8 0.0264832 0.0262843 "32"
+672.7 0.0189356 0.0188115 "64"
+1331 0.0134033 0.0133121 "128"
+2699 0.0096764 0.00960391 "256"
 EOD
 $pareto << EOD
-38.55 0.0709748 0.06987 "GI off"
-1753 0.0327495 0.0304686 "default"
+51.14 0.0709748 0.06987 "GI off"
+1973 0.0327749 0.0304961 "default"
 EOD
 $paretoIndirect << EOD
-38.55 0.0709748 0.06987 "GI off"
-1753 0.0327495 0.0304686 "default"
+51.14 0.0709748 0.06987 "GI off"
+1973 0.0327749 0.0304961 "default"
 EOD
 $default << EOD
-1753 0.0327495 0.0304686 "default"
+1973 0.0327749 0.0304961 "default"
 EOD
 set xtics ("1" 1, "2" 2, "5" 5, "10" 10, "20" 20, "50" 50, "100" 100, "200" 200, "500" 500, "1000" 1000, "2000" 2000, "5000" 5000, "10000" 10000, "20000" 20000, "50000" 50000, "100000" 100000, "200000" 200000, "500000" 500000)
 noise = 0.00233982
-set multiplot layout 1,3 title "cornell 320x240: error against time, vct settings and the path tracer (1 bounce, reference 4096 spp), llvmpipe (LLVM 15.0.6, 256 bits), 2026-11-25" font ',12'
+set multiplot layout 1,3 title "cornell 320x240: error against time, vct settings and the path tracer (1 bounce, reference 4096 spp), llvmpipe (LLVM 15.0.6, 256 bits), 2026-11-26" font ',12'
 set logscale xy
 set grid xtics ytics mxtics mytics lc rgb '#e0e0e0'
 set xlabel 'time (ms, log): vct full warm frame / path-tracer render, same CPU'
@@ -61,8 +61,8 @@ unset logscale y
 set ytics auto
 set format y '%g'
 set xtics ("1" 1, "2" 2, "5" 5, "10" 10, "20" 20, "50" 50, "100" 100, "200" 200, "500" 500, "1000" 1000, "2000" 2000, "5000" 5000, "10000" 10000, "20000" 20000, "50000" 50000, "100000" 100000, "200000" 200000, "500000" 500000)
-set xrange [29.6577:3156.08]
-set yrange [0.0296915:0.0740328]
+set xrange [39.3383:3552.12]
+set yrange [0.0297189:0.0740308]
 set key top left box opaque font ',9'
 set ylabel 'RMSE of the full image vs reference (linear)'
 set title 'vct points only (zoom; full image)'

@@ -2,33 +2,33 @@
 set terminal pngcairo size 2100,700 enhanced font 'DejaVu Sans,10'
 set output "bench_readme_sponza.png"
 $engine << EOD
-238.9 0.0444857 0.0316567 "GI off"
-2073 0.0343703 0.0139314 "default"
+264.5 0.0444857 0.0316567 "GI off"
+2447 0.0343469 0.0138814 "default"
 EOD
 $pathtracer << EOD
-38.45 0.100813 0.078527 "1"
-76.77 0.07398 0.0559022 "2"
-155.9 0.0538738 0.0398726 "4"
-302.9 0.0381414 0.0281776 "8"
-596.1 0.0270134 0.0199552 "16"
-1185 0.0192044 0.0143156 "32"
-2402 0.0138254 0.0102089 "64"
-4642 0.0101568 0.00748851 "128"
+52.4 0.100813 0.078527 "1"
+106.3 0.07398 0.0559022 "2"
+205.2 0.0538738 0.0398726 "4"
+404.7 0.0381414 0.0281776 "8"
+820.6 0.0270134 0.0199552 "16"
+1644 0.0192044 0.0143156 "32"
+3302 0.0138254 0.0102089 "64"
+6323 0.0101568 0.00748851 "128"
 EOD
 $pareto << EOD
-238.9 0.0444857 0.0316567 "GI off"
-2073 0.0343703 0.0139314 "default"
+264.5 0.0444857 0.0316567 "GI off"
+2447 0.0343469 0.0138814 "default"
 EOD
 $paretoIndirect << EOD
-238.9 0.0444857 0.0316567 "GI off"
-2073 0.0343703 0.0139314 "default"
+264.5 0.0444857 0.0316567 "GI off"
+2447 0.0343469 0.0138814 "default"
 EOD
 $default << EOD
-2073 0.0343703 0.0139314 "default"
+2447 0.0343469 0.0138814 "default"
 EOD
 set xtics ("1" 1, "2" 2, "5" 5, "10" 10, "20" 20, "50" 50, "100" 100, "200" 200, "500" 500, "1000" 1000, "2000" 2000, "5000" 5000, "10000" 10000, "20000" 20000, "50000" 50000, "100000" 100000, "200000" 200000, "500000" 500000)
 noise = 0.00337035
-set multiplot layout 1,3 title "sponza 320x180: error against time, vct settings and the path tracer (1 bounce, reference 1024 spp), llvmpipe (LLVM 15.0.6, 256 bits), 2026-11-25" font ',12'
+set multiplot layout 1,3 title "sponza 320x180: error against time, vct settings and the path tracer (1 bounce, reference 1024 spp), llvmpipe (LLVM 15.0.6, 256 bits), 2026-11-26" font ',12'
 set logscale xy
 set grid xtics ytics mxtics mytics lc rgb '#e0e0e0'
 set xlabel 'time (ms, log): vct full warm frame / path-tracer render, same CPU'
@@ -60,8 +60,8 @@ unset logscale y
 set ytics auto
 set format y '%g'
 set xtics ("10" 10, "20" 20, "50" 50, "100" 100, "200" 200, "500" 500, "1000" 1000, "2000" 2000, "5000" 5000, "10000" 10000, "20000" 20000, "50000" 50000, "100000" 100000, "200000" 200000, "500000" 500000)
-set xrange [183.779:3731.76]
-set yrange [0.0335611:0.0452949]
+set xrange [203.435:4404.84]
+set yrange [0.0335358:0.0452968]
 set key top left box opaque font ',9'
 set ylabel 'RMSE of the full image vs reference (linear)'
 set title 'vct points only (zoom; full image)'

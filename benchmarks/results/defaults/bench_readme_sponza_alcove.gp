@@ -2,33 +2,33 @@
 set terminal pngcairo size 2100,700 enhanced font 'DejaVu Sans,10'
 set output "bench_readme_sponza_alcove.png"
 $engine << EOD
-220.4 0.0155152 0.00718342 "GI off"
-2071 0.0149912 0.00529054 "default"
+241.2 0.0155152 0.00718342 "GI off"
+2217 0.015162 0.00561124 "default"
 EOD
 $pathtracer << EOD
-36.19 0.0304382 0.0246553 "1"
-70.57 0.0232197 0.0182311 "2"
-134.8 0.0161894 0.0125611 "4"
-275.9 0.0118156 0.0087004 "8"
-550.4 0.00837981 0.0063605 "16"
-1087 0.00565385 0.00448905 "32"
-2203 0.00419137 0.00318578 "64"
-4290 0.00309643 0.00232286 "128"
+38.5 0.0304382 0.0246553 "1"
+77.23 0.0232197 0.0182311 "2"
+151.5 0.0161894 0.0125611 "4"
+303.1 0.0118156 0.0087004 "8"
+610.4 0.00837981 0.0063605 "16"
+1220 0.00565385 0.00448905 "32"
+2458 0.00419137 0.00318578 "64"
+4929 0.00309643 0.00232286 "128"
 EOD
 $pareto << EOD
-220.4 0.0155152 0.00718342 "GI off"
-2071 0.0149912 0.00529054 "default"
+241.2 0.0155152 0.00718342 "GI off"
+2217 0.015162 0.00561124 "default"
 EOD
 $paretoIndirect << EOD
-220.4 0.0155152 0.00718342 "GI off"
-2071 0.0149912 0.00529054 "default"
+241.2 0.0155152 0.00718342 "GI off"
+2217 0.015162 0.00561124 "default"
 EOD
 $default << EOD
-2071 0.0149912 0.00529054 "default"
+2217 0.015162 0.00561124 "default"
 EOD
 set xtics ("1" 1, "2" 2, "5" 5, "10" 10, "20" 20, "50" 50, "100" 100, "200" 200, "500" 500, "1000" 1000, "2000" 2000, "5000" 5000, "10000" 10000, "20000" 20000, "50000" 50000, "100000" 100000, "200000" 200000, "500000" 500000)
 noise = 0.0010487
-set multiplot layout 1,3 title "sponza 320x180: error against time, vct settings and the path tracer (1 bounce, reference 1024 spp), llvmpipe (LLVM 15.0.6, 256 bits), 2026-11-25" font ',12'
+set multiplot layout 1,3 title "sponza 320x180: error against time, vct settings and the path tracer (1 bounce, reference 1024 spp), llvmpipe (LLVM 15.0.6, 256 bits), 2026-11-26" font ',12'
 set logscale xy
 set grid xtics ytics mxtics mytics lc rgb '#e0e0e0'
 set xlabel 'time (ms, log): vct full warm frame / path-tracer render, same CPU'
@@ -60,8 +60,8 @@ unset logscale y
 set ytics auto
 set format y '%g'
 set xtics ("10" 10, "20" 20, "50" 50, "100" 100, "200" 200, "500" 500, "1000" 1000, "2000" 2000, "5000" 5000, "10000" 10000, "20000" 20000, "50000" 50000, "100000" 100000, "200000" 200000, "500000" 500000)
-set xrange [169.55:3727.58]
-set yrange [0.0149292:0.0155772]
+set xrange [185.541:3990.31]
+set yrange [0.0151:0.0155772]
 set key top left box opaque font ',9'
 set ylabel 'RMSE of the full image vs reference (linear)'
 set title 'vct points only (zoom; full image)'

@@ -2,33 +2,33 @@
 set terminal pngcairo size 2100,700 enhanced font 'DejaVu Sans,10'
 set output "bench_readme_sponza_alternate.png"
 $engine << EOD
-226.6 0.0397508 0.0331504 "GI off"
-2160 0.0268786 0.0154275 "default"
+264.3 0.0397508 0.0331504 "GI off"
+2369 0.0269849 0.015605 "default"
 EOD
 $pathtracer << EOD
-44.81 0.10519 0.078003 "1"
-87.74 0.0759991 0.0551047 "2"
-174.4 0.0543785 0.0387149 "4"
-337.5 0.0391751 0.0275751 "8"
-696.3 0.0278626 0.0195666 "16"
-1341 0.0197724 0.0140758 "32"
-2645 0.0142997 0.0101254 "64"
-5594 0.0104086 0.00738225 "128"
+54.39 0.10519 0.078003 "1"
+102.1 0.0759991 0.0551047 "2"
+200.2 0.0543785 0.0387149 "4"
+401.4 0.0391751 0.0275751 "8"
+797.2 0.0278626 0.0195666 "16"
+1594 0.0197724 0.0140758 "32"
+3461 0.0142997 0.0101254 "64"
+6601 0.0104086 0.00738225 "128"
 EOD
 $pareto << EOD
-226.6 0.0397508 0.0331504 "GI off"
-2160 0.0268786 0.0154275 "default"
+264.3 0.0397508 0.0331504 "GI off"
+2369 0.0269849 0.015605 "default"
 EOD
 $paretoIndirect << EOD
-226.6 0.0397508 0.0331504 "GI off"
-2160 0.0268786 0.0154275 "default"
+264.3 0.0397508 0.0331504 "GI off"
+2369 0.0269849 0.015605 "default"
 EOD
 $default << EOD
-2160 0.0268786 0.0154275 "default"
+2369 0.0269849 0.015605 "default"
 EOD
 set xtics ("1" 1, "2" 2, "5" 5, "10" 10, "20" 20, "50" 50, "100" 100, "200" 200, "500" 500, "1000" 1000, "2000" 2000, "5000" 5000, "10000" 10000, "20000" 20000, "50000" 50000, "100000" 100000, "200000" 200000, "500000" 500000)
 noise = 0.00347134
-set multiplot layout 1,3 title "sponza 320x180: error against time, vct settings and the path tracer (1 bounce, reference 1024 spp), llvmpipe (LLVM 15.0.6, 256 bits), 2026-11-25" font ',12'
+set multiplot layout 1,3 title "sponza 320x180: error against time, vct settings and the path tracer (1 bounce, reference 1024 spp), llvmpipe (LLVM 15.0.6, 256 bits), 2026-11-26" font ',12'
 set logscale xy
 set grid xtics ytics mxtics mytics lc rgb '#e0e0e0'
 set xlabel 'time (ms, log): vct full warm frame / path-tracer render, same CPU'
@@ -60,8 +60,8 @@ unset logscale y
 set ytics auto
 set format y '%g'
 set xtics ("10" 10, "20" 20, "50" 50, "100" 100, "200" 200, "500" 500, "1000" 1000, "2000" 2000, "5000" 5000, "10000" 10000, "20000" 20000, "50000" 50000, "100000" 100000, "200000" 200000, "500000" 500000)
-set xrange [174.296:3888.46]
-set yrange [0.0258489:0.0407806]
+set xrange [203.291:4264.2]
+set yrange [0.0259636:0.0407721]
 set key top left box opaque font ',9'
 set ylabel 'RMSE of the full image vs reference (linear)'
 set title 'vct points only (zoom; full image)'

@@ -2,33 +2,33 @@
 set terminal pngcairo size 2100,700 enhanced font 'DejaVu Sans,10'
 set output "bench_readme_sponza_balcony.png"
 $engine << EOD
-209.7 0.00273708 0.00273708 "GI off"
-2097 0.00157007 0.00157007 "default"
+218 0.00273708 0.00273708 "GI off"
+2160 0.00157847 0.00157847 "default"
 EOD
 $pathtracer << EOD
-32.98 0.0177069 0.0177069 "1"
-61.91 0.0133459 0.0133459 "2"
-120.3 0.00957402 0.00957402 "4"
-235.7 0.00682156 0.00682156 "8"
-461.6 0.00490017 0.00490017 "16"
-927.9 0.00348164 0.00348164 "32"
-1845 0.00249175 0.00249175 "64"
-3685 0.00183139 0.00183139 "128"
+36.2 0.0177069 0.0177069 "1"
+72.26 0.0133459 0.0133459 "2"
+142.7 0.00957402 0.00957402 "4"
+282.3 0.00682156 0.00682156 "8"
+556.1 0.00490017 0.00490017 "16"
+1109 0.00348164 0.00348164 "32"
+2237 0.00249175 0.00249175 "64"
+4411 0.00183139 0.00183139 "128"
 EOD
 $pareto << EOD
-209.7 0.00273708 0.00273708 "GI off"
-2097 0.00157007 0.00157007 "default"
+218 0.00273708 0.00273708 "GI off"
+2160 0.00157847 0.00157847 "default"
 EOD
 $paretoIndirect << EOD
-209.7 0.00273708 0.00273708 "GI off"
-2097 0.00157007 0.00157007 "default"
+218 0.00273708 0.00273708 "GI off"
+2160 0.00157847 0.00157847 "default"
 EOD
 $default << EOD
-2097 0.00157007 0.00157007 "default"
+2160 0.00157847 0.00157847 "default"
 EOD
 set xtics ("1" 1, "2" 2, "5" 5, "10" 10, "20" 20, "50" 50, "100" 100, "200" 200, "500" 500, "1000" 1000, "2000" 2000, "5000" 5000, "10000" 10000, "20000" 20000, "50000" 50000, "100000" 100000, "200000" 200000, "500000" 500000)
 noise = 0.000609846
-set multiplot layout 1,3 title "sponza 320x180: error against time, vct settings and the path tracer (1 bounce, reference 1024 spp), llvmpipe (LLVM 15.0.6, 256 bits), 2026-11-25" font ',12'
+set multiplot layout 1,3 title "sponza 320x180: error against time, vct settings and the path tracer (1 bounce, reference 1024 spp), llvmpipe (LLVM 15.0.6, 256 bits), 2026-11-26" font ',12'
 set logscale xy
 set grid xtics ytics mxtics mytics lc rgb '#e0e0e0'
 set xlabel 'time (ms, log): vct full warm frame / path-tracer render, same CPU'
@@ -60,8 +60,8 @@ unset logscale y
 set ytics auto
 set format y '%g'
 set xtics ("10" 10, "20" 20, "50" 50, "100" 100, "200" 200, "500" 500, "1000" 1000, "2000" 2000, "5000" 5000, "10000" 10000, "20000" 20000, "50000" 50000, "100000" 100000, "200000" 200000, "500000" 500000)
-set xrange [161.313:3774.17]
-set yrange [0.0014767:0.00283044]
+set xrange [167.694:3887.59]
+set yrange [0.00148578:0.00282977]
 set key top left box opaque font ',9'
 set ylabel 'RMSE of the full image vs reference (linear)'
 set title 'vct points only (zoom; full image)'
