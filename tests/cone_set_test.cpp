@@ -4,20 +4,16 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <cstdlib>
-#include <filesystem>
-#include <fstream>
 #include <map>
+#include <string>
 #include <vector>
 
 #include <glm/gtc/constants.hpp>
 
 #include "core/error.hpp"
-#include "gl/compute.hpp"
 #include "gl/context.hpp"
-#include "gl/shader.hpp"
 #include "render/cone_set.hpp"
-#include "svo_readback.hpp"
+#include "shader_probe.hpp"
 #include "test_util.hpp"
 
 using namespace vct;
@@ -133,12 +129,8 @@ TEST(ConeSet, TheShadersRegionsAreThePathTracers) {
     // coneRegionOf (the path tracer's --cone-region) must split the hemisphere alike, or a region's
     // light would be compared with another region's. Directions on a Fibonacci hemisphere, for
     // every set; those within 1e-4 rad of a region's border may round either way.
-    const auto dir = test::testDir();
-    for (const char* include : {"math.glsl", "cone_regions.glsl"})
-        std::filesystem::copy_file(gl::shaderDirectory() / include, dir / include,
-                                   std::filesystem::copy_options::overwrite_existing);
-    std::ofstream(dir / "cone_regions_probe.comp")
-        << "#version 450\nlayout(local_size_x = 64) in;\n#include \"math.glsl\"\n#include \"cone_regions.glsl\"\n"
+    const std::string probe =
+        "#version 450\nlayout(local_size_x = 64) in;\n#include \"math.glsl\"\n#include \"cone_regions.glsl\"\n"
            "layout(std430, binding = SSBO_CONE_COUNTERS) buffer Cases { vec4 cases[]; };\n"
            "uniform uint uCount;\n"
            "void main() {\n"
@@ -155,16 +147,8 @@ TEST(ConeSet, TheShadersRegionsAreThePathTracers) {
             cases.push_back({r * std::cos(phi), r * std::sin(phi), z, float(count)});
         }
     auto context = gl::createContext(gl::defaultBackend());
-    setenv("VCT_SHADER_DIR", dir.c_str(), 1);
-    const gl::Program program = gl::buildProgram({{GL_COMPUTE_SHADER, "cone_regions_probe.comp"}});
-    unsetenv("VCT_SHADER_DIR");
-    const gl::Buffer buffer = gl::createBuffer(GLsizeiptr(cases.size() * sizeof(glm::vec4)), cases.data(),
-                                               GL_DYNAMIC_STORAGE_BIT, "cone region cases");
-    gl::ComputeCall(program)
-        .storage(gl::SSBO_CONE_COUNTERS, buffer)
-        .uniform("uCount", unsigned(cases.size()))
-        .dispatch1D(cases.size(), 64, GL_BUFFER_UPDATE_BARRIER_BIT);
-    const std::vector<glm::vec4> out = test::readBuffer<glm::vec4>(buffer, cases.size());
+    const std::vector<glm::vec4> out =
+        test::runShaderProbe("cone_regions_probe.comp", {"math.glsl", "cone_regions.glsl"}, probe, cases);
     int disagreements = 0, nearBorder = 0;
     for (std::size_t i = 0; i < cases.size(); ++i) {
         const int count = int(cases[i].w);

@@ -6,8 +6,6 @@
 // weight subtracts the light that lies ahead.
 #include <cmath>
 #include <cstdio>
-#include <filesystem>
-#include <fstream>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -16,6 +14,7 @@
 #include "gl/compute.hpp"
 #include "gl/context.hpp"
 #include "gl/shader.hpp"
+#include "shader_probe.hpp"
 #include "svo_readback.hpp"
 #include "test_util.hpp"
 
@@ -66,12 +65,9 @@ glm::dvec3 integratedAlongPlus(glm::dvec3 axis, double tanHalfAngle) {
 }  // namespace
 
 TEST(ConeSpread, AxisWeightsMatchTheModelAndTheConeAndAreNeverNegative) {
-    // A compute shader that runs coneSpread for every case: the real include, copied beside it.
-    const auto dir = test::testDir();
-    std::filesystem::copy_file(gl::shaderDirectory() / "cone_spread.glsl", dir / "cone_spread.glsl",
-                               std::filesystem::copy_options::overwrite_existing);
-    std::ofstream(dir / "cone_spread_probe.comp")
-        << "#version 450\nlayout(local_size_x = 64) in;\n#include \"cone_spread.glsl\"\n"
+    // A compute shader that runs coneSpread for every case, on the real include.
+    const std::string probe =
+        "#version 450\nlayout(local_size_x = 64) in;\n#include \"cone_spread.glsl\"\n"
            "struct SpreadCase { vec4 cone; vec4 alongPlus; vec4 alongMinus; };\n"
            "layout(std430, binding = SSBO_CONE_COUNTERS) buffer Cases { SpreadCase cases[]; };\n"
            "uniform uint uCount;\n"
@@ -98,16 +94,7 @@ TEST(ConeSpread, AxisWeightsMatchTheModelAndTheConeAndAreNeverNegative) {
         for (float t : tanHalfAngles) cases.push_back({glm::vec4(axis, t), glm::vec4(0.0f), glm::vec4(0.0f)});
 
     auto context = gl::createContext(gl::defaultBackend());
-    setenv("VCT_SHADER_DIR", dir.c_str(), 1);
-    const gl::Program program = gl::buildProgram({{GL_COMPUTE_SHADER, "cone_spread_probe.comp"}});
-    unsetenv("VCT_SHADER_DIR");
-    const gl::Buffer buffer = gl::createBuffer(GLsizeiptr(cases.size() * sizeof(SpreadCase)), cases.data(),
-                                               GL_DYNAMIC_STORAGE_BIT, "cone spread cases");
-    gl::ComputeCall(program)
-        .storage(gl::SSBO_CONE_COUNTERS, buffer)
-        .uniform("uCount", unsigned(cases.size()))
-        .dispatch1D(cases.size(), 64, GL_BUFFER_UPDATE_BARRIER_BIT);
-    const std::vector<SpreadCase> out = test::readBuffer<SpreadCase>(buffer, cases.size());
+    const std::vector<SpreadCase> out = test::runShaderProbe("cone_spread_probe.comp", {"cone_spread.glsl"}, probe, cases);
 
     double worstModel = 0.0, worstCone = 0.0;
     for (const SpreadCase& c : out) {
