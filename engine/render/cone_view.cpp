@@ -13,8 +13,7 @@ float viewConeTan(const ConeSettings& settings) {
 }
 
 ConeView::ConeView(int width, int height)
-    : image_(width, height, "cone view"),
-      program_(gl::buildProgram({{GL_COMPUTE_SHADER, "cone_view.comp"}})) {}
+    : EyeRayView(width, height, "cone view", "cone_view.comp") {}
 
 void ConeView::render(const Octree& octree, const RadianceVolume& radiance, const Camera& camera, const Scene& scene,
                       const ConeSettings& settings) {

@@ -17,19 +17,13 @@ namespace vct {
 // times the aperture scale.
 float viewConeTan(const ConeSettings& settings);
 
-class ConeView {
+class ConeView : public EyeRayView {
 public:
     ConeView(int width, int height);
     // The cone is as wide as the cap of `settings`' cone set, or with narrow cones (rays > 0) as
     // a narrow cone (viewConeTan), and samples as those cones do.
     void render(const Octree& octree, const RadianceVolume& radiance, const Camera& camera, const Scene& scene,
                 const ConeSettings& settings);
-    GLuint image() const { return image_.id(); }
-    std::size_t bytes() const { return image_.bytes(); }
-
-private:
-    EyeRayImage image_;
-    gl::Program program_;
 };
 
 }  // namespace vct

@@ -6,6 +6,7 @@
 
 #include "gl/compute.hpp"
 #include "gl/objects.hpp"
+#include "gl/shader.hpp"
 #include "scene/camera.hpp"
 #include "scene/scene.hpp"
 #include "voxel/octree.hpp"
@@ -34,6 +35,20 @@ public:
 private:
     int width_, height_;
     gl::Texture texture_;
+};
+
+// A debug view that marches one ray or cone per pixel from the eye into an image of its own with
+// one compute shader (VoxelView, ConeView).
+class EyeRayView {
+public:
+    GLuint image() const { return image_.id(); }
+    std::size_t bytes() const { return image_.bytes(); }
+
+protected:
+    EyeRayView(int width, int height, const char* label, const char* shader)
+        : image_(width, height, label), program_(gl::buildProgram({{GL_COMPUTE_SHADER, shader}})) {}
+    EyeRayImage image_;
+    gl::Program program_;
 };
 
 }  // namespace vct

@@ -8,8 +8,7 @@
 namespace vct {
 
 VoxelView::VoxelView(int width, int height)
-    : image_(width, height, "voxel view"),
-      program_(gl::buildProgram({{GL_COMPUTE_SHADER, "voxel_view.comp"}})) {}
+    : EyeRayView(width, height, "voxel view", "voxel_view.comp") {}
 
 void VoxelView::render(const Octree& octree, const RadianceVolume* radiance, const Camera& camera, const Scene& scene,
                        int level, bool useBricks) {

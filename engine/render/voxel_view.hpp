@@ -9,18 +9,12 @@
 
 namespace vct {
 
-class VoxelView {
+class VoxelView : public EyeRayView {
 public:
     VoxelView(int width, int height);
     // The albedo of the octree's level `level`, or with `radiance` its radiance.
     void render(const Octree& octree, const RadianceVolume* radiance, const Camera& camera, const Scene& scene,
                 int level, bool useBricks);
-    GLuint image() const { return image_.id(); }
-    std::size_t bytes() const { return image_.bytes(); }
-
-private:
-    EyeRayImage image_;
-    gl::Program program_;
 };
 
 }  // namespace vct
