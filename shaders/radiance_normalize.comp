@@ -31,11 +31,17 @@ uniform int uHasEmissive;
 // front hid the lit triangle behind it. Pooled, it shows the radiance of the column's surface.
 const float POOLING_AREA = 0.5;
 
+// One 64-bit fixed-point sum, stored as its low word then its high word.
+double wideSum(uint word) {
+    return double(radianceAccumulator[word]) + 4294967296.0lf * double(radianceAccumulator[word + 1u]);
+}
+
 // The photons' sums of `cell`: flux (rgb, fixed-point units), lit-normal sum (3) and count.
+// The flux is built whole: NVIDIA's compiler cannot write a double vector's component chosen by
+// a variable (flux[c] = ...), it fails to link with an internal error.
 void photonSums(uint cell, out dvec3 flux, out ivec3 litNormal, out uint photons) {
     uint base = cell * ACCUMULATOR_WORDS;
-    for (uint c = 0u; c < 3u; ++c)
-        flux[c] = double(radianceAccumulator[base + 2u * c]) + 4294967296.0lf * double(radianceAccumulator[base + 2u * c + 1u]);
+    flux = dvec3(wideSum(base), wideSum(base + 2u), wideSum(base + 4u));
     litNormal = ivec3(int(radianceAccumulator[base + 6u]), int(radianceAccumulator[base + 7u]), int(radianceAccumulator[base + 8u]));
     photons = radianceAccumulator[base + 9u];
 }
