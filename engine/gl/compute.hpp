@@ -4,6 +4,7 @@
 // one small object, and 1D work that may exceed the 65535-group limit per axis.
 #include <cstdint>
 
+#include "gl/driver_checks.hpp"
 #include "gl/objects.hpp"
 #include "gl/shader.hpp"
 #include "gl/shader_interface.hpp"
@@ -55,7 +56,7 @@ public:
     void dispatch(GLuint x, GLuint y, GLuint z, GLbitfield barriers) const {
         glUseProgram(program_);
         if (x && y && z) glDispatchCompute(x, y, z);
-        glMemoryBarrier(barriers);
+        memoryBarrier(barriers);
     }
     // One invocation per item, in groups of `groupSize` (the shader's local size).
     void dispatch1D(std::uint64_t items, GLuint groupSize, GLbitfield barriers) const {

@@ -3,6 +3,7 @@
 #include <cstring>
 
 #include "core/error.hpp"
+#include "gl/driver_checks.hpp"
 
 namespace vct::gl {
 namespace {
@@ -19,6 +20,8 @@ Buffer createBuffer(GLsizeiptr bytes, const void* data, GLbitfield storageFlags,
     // size of the largest element vct clears or binds (RGBA32F): GL refuses size 0, and a 1-byte
     // store made glClearNamedBufferData fail with GL_INVALID_VALUE.
     glNamedBufferStorage(id, bytes > 0 ? bytes : 16, bytes > 0 ? data : nullptr, storageFlags);
+    if (!data && poisonNewStorage())
+        glClearNamedBufferData(id, GL_R8UI, GL_RED_INTEGER, GL_UNSIGNED_BYTE, &kPoisonByte);
     label(GL_BUFFER, id, text);
     checkErrors(concat("allocating buffer '", text ? text : "", "' (", bytes, " bytes)"));
     return buffer;

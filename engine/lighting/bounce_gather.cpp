@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "gl/driver_checks.hpp"
+
 namespace vct {
 
 BounceGather::BounceGather()
@@ -19,7 +21,7 @@ void BounceGather::run(const Octree& octree, RadianceVolume& volume, RadianceFil
         listBytes_ = 4 * std::max<std::size_t>(cells, 1);
         ownGatherCells_ = gl::createBuffer(GLsizeiptr(listBytes_), nullptr, 0, "cells that gather their own bounce");
     }
-    glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);
+    gl::memoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);
     glCopyNamedBufferSubData(volume.cellRadiance.id(), base_.id(), 0, 0, GLsizeiptr(half));
     glCopyNamedBufferSubData(volume.cellDirection.id(), base_.id(), 0, GLintptr(half), GLsizeiptr(half));
     constexpr GLbitfield kBarrier = GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT;
@@ -48,16 +50,16 @@ void BounceGather::run(const Octree& octree, RadianceVolume& volume, RadianceFil
         filter.leaves(octree, volume);
         filter.mip(octree, volume);
     }
-    glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);
+    gl::memoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);
     glCopyNamedBufferSubData(base_.id(), volume.cellRadiance.id(), 0, 0, GLsizeiptr(half));
     glCopyNamedBufferSubData(base_.id(), volume.cellDirection.id(), GLintptr(half), 0, GLsizeiptr(half));
-    glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);
+    gl::memoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);
     gl::checkErrors("gathering further bounces");
 }
 
 std::uint32_t BounceGather::ownGathers(const RadianceVolume& volume) const {
     std::uint32_t count = 0;
-    glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+    gl::memoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
     glGetNamedBufferSubData(volume.listCounts.id(), GLintptr(4 * gl::BOUNCE_LIST_COUNT_SLOT), 4, &count);
     return count;
 }

@@ -5,6 +5,7 @@
 
 #include "core/error.hpp"
 #include "core/math_constants.hpp"
+#include "gl/driver_checks.hpp"
 
 namespace vct {
 
@@ -33,7 +34,7 @@ void PhotonInjection::run(const Octree& octree, RadianceVolume& volume, const Sc
     clearListCounts(volume, gl::MISSED_COUNT_SLOT, gl::LIST_COUNT_SLOTS);
     for (const gl::Buffer* b : {&volume.cellRadiance, &volume.cellDirection})
         glClearNamedBufferData(b->id(), GL_RGBA32F, GL_RGBA, GL_FLOAT, zeros);
-    glMemoryBarrier(GL_ALL_BARRIER_BITS);
+    gl::memoryBarrier(GL_ALL_BARRIER_BITS);
     volume.wattsPerUnit = fluxWattsPerUnit(lights, lightViews);
     std::uint64_t texels = 0;
     for (const std::vector<LightViewMap>& maps : lightViews)

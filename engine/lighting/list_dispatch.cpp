@@ -1,5 +1,7 @@
 #include "lighting/list_dispatch.hpp"
 
+#include "gl/driver_checks.hpp"
+
 namespace vct {
 
 ListDispatch::ListDispatch() : args_(gl::buildProgram({{GL_COMPUTE_SHADER, "indirect_args.comp"}})) {}
@@ -35,7 +37,7 @@ void ListDispatch::dispatch(const gl::ComputeCall& call, const gl::Buffer& count
     glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, args.id());
     glDispatchComputeIndirect(GLintptr(argsSlot) * 12);
     glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, 0);
-    glMemoryBarrier(barriers);
+    gl::memoryBarrier(barriers);
 }
 
 }  // namespace vct

@@ -1,5 +1,7 @@
 #include "lighting/radiance_filter.hpp"
 
+#include "gl/driver_checks.hpp"
+
 #include "voxel/brick_pool.hpp"
 
 namespace vct {
@@ -37,7 +39,7 @@ void RadianceFilter::leaves(const Octree& octree, RadianceVolume& volume) {
     const std::uint32_t zero = 0;
     glClearNamedBufferData(volume.borderFlag.id(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
     clearListCounts(volume, gl::BORDER_COUNT_SLOT, gl::MISSED_COUNT_SLOT);
-    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
+    gl::memoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
     volume.darkOutsideBorderFor = octree.geometryBricksBuild;
 
     for (int level = octree.levels - 1; level >= 0; --level)

@@ -5,6 +5,7 @@
 
 #include "core/error.hpp"
 #include "core/log.hpp"
+#include "gl/driver_checks.hpp"
 #include "gl/raster_state.hpp"
 #include "gl/shader.hpp"
 #include "gl/shader_interface.hpp"
@@ -69,7 +70,7 @@ void Voxelizer::run(const GpuScene& gpuScene, const Scene& scene, const VoxelGri
         glBindImageTexture(gl::IMAGE_FRAGMENTS, list.dataTexture.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32UI);
         gpuScene.draw(p);
         gl::endRasterPass();
-        glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT |
+        gl::memoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT |
                         GL_BUFFER_UPDATE_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
         std::uint32_t count = 0;
         glGetNamedBufferSubData(list.counter.id(), 0, 4, &count);

@@ -1,0 +1,21 @@
+#pragma once
+// Switches that make driver-dependent bugs show on any driver. llvmpipe finishes every dispatch
+// before the next starts and hands out zeroed memory, so a pass that asks for too few barrier bits
+// or reads storage nobody wrote works there and fails on a GPU. Two environment variables:
+//   VCT_GL_ALL_BARRIERS=1  every memory barrier the engine issues covers every kind of access: an
+//                          image that changes with it names a pass that asks for too few bits.
+//   VCT_GL_POISON=1        new buffers start filled with 0x7F bytes (float 3.4e38, uint 2.1e9)
+//                          instead of what the driver happens to give: a pass that reads what
+//                          nobody wrote shows it on llvmpipe too.
+#include "gl/gl.hpp"
+
+namespace vct::gl {
+
+// glMemoryBarrier(barriers), or every bit under VCT_GL_ALL_BARRIERS.
+void memoryBarrier(GLbitfield barriers);
+
+// Whether VCT_GL_POISON asks new buffers to be filled with the poison byte.
+bool poisonNewStorage();
+inline constexpr unsigned char kPoisonByte = 0x7F;
+
+}  // namespace vct::gl

@@ -1,0 +1,37 @@
+// The driver checks (engine/gl/driver_checks.hpp) on a frame that runs every pass: the octree
+// build, photons, two bounces and the cone trace, then a second frame after the light moved,
+// which reuses the first frame's buffers. Neither switch may change a bit of the image. Poisoned
+// buffers that changed it would mean a pass reads storage nobody wrote, which llvmpipe's zeroed
+// allocations hide and a GPU's leftovers do not; all barriers that changed it would mean a pass
+// asks for too few barrier bits (on llvmpipe, which finishes each dispatch before the next, only
+// a GPU can show that).
+#include <fstream>
+#include <iterator>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "test_util.hpp"
+
+namespace {
+
+std::string renderBytes(const std::filesystem::path& dir, const std::string& name, const std::string& environment) {
+    const auto out = dir / name;
+    const vct::test::CommandResult r = vct::test::runVct(
+        "render -q --scene cornell --width 48 --height 36 --voxel-levels 6 --bounces 2 --frames 2 "
+        "--light-path orbit --out " + out.string() + ".png --hdr-out " + out.string() + ".pfm",
+        environment);
+    EXPECT_EQ(r.exitCode, 0) << r.output;
+    std::ifstream in(out.string() + ".pfm", std::ios::binary);
+    return std::string(std::istreambuf_iterator<char>(in), {});
+}
+
+}  // namespace
+
+TEST(DriverChecks, PoisonedBuffersAndFullBarriersChangeNoBit) {
+    const auto dir = vct::test::testDir();
+    const std::string plain = renderBytes(dir, "plain", "");
+    ASSERT_GT(plain.size(), 48u * 36u * 12u);
+    EXPECT_EQ(renderBytes(dir, "poisoned", "VCT_GL_POISON=1"), plain) << "a pass reads a buffer nobody wrote";
+    EXPECT_EQ(renderBytes(dir, "barriers", "VCT_GL_ALL_BARRIERS=1"), plain) << "a pass asks for too few barrier bits";
+}
