@@ -219,7 +219,10 @@ TEST(Metrics, ErrorImageColoursFollowTheDocumentedScale) {
 }
 
 // core/tonemap.hpp is the C++ twin of shaders/tonemap.glsl: the engine's own PNG and the CPU
-// display transform of the engine's HDR output agree to the last bit (±1 for float rounding).
+// display transform of the engine's HDR output agree to the last bit, ±1 for float rounding. How
+// many values land on the other side of a rounding step depends on the driver's pow and exp: none
+// on llvmpipe, a few percent on a GPU whose transcendentals are approximations; a wrong curve or
+// a wrong sRGB step moves most values by more than one step.
 TEST(Metrics, CpuDisplayTransformMatchesTheEnginePng) {
     const auto dir = test::testDir();
     for (const char* curve : {"aces", "reinhard", "clamp"}) {
@@ -241,7 +244,7 @@ TEST(Metrics, CpuDisplayTransformMatchesTheEnginePng) {
         std::printf("[ tonemap ] %s: %.2f %% of channel values identical, worst difference %d/255\n", curve,
                     100.0 * exact / total, worst);
         EXPECT_LE(worst, 1) << curve;
-        EXPECT_GT(double(exact) / total, 0.99) << curve;
+        EXPECT_GT(double(exact) / total, 0.95) << curve;
     }
     // Known values: sRGB OETF of 0.5 is 0.7354, ACES(1) = 0.8038.
     EXPECT_NEAR(linearToSrgb(glm::vec3(0.5f)).x, 0.735357f, 1e-5);

@@ -40,6 +40,13 @@ bool recording() {
 
 // The frame the guard times: small enough for a test, with every pass of a lit frame running
 // (a second bounce, so the bounce pass is guarded too).
+// "llvmpipe (LLVM 15.0.6, 256 bits)" -> "llvmpipe"; "NVIDIA H200/PCIe/SSE2" -> "NVIDIA H200".
+std::string rendererFamily(const std::string& renderer) {
+    std::string family = renderer.substr(0, renderer.find_first_of("(/"));
+    while (!family.empty() && family.back() == ' ') family.pop_back();
+    return family;
+}
+
 RenderSettings guardSettings(int voxelLevels) {
     RenderSettings settings;
     settings.width = 160;
@@ -53,6 +60,17 @@ RenderSettings guardSettings(int voxelLevels) {
 
 void guard(const std::string& key, const Scene& scene, int voxelLevels) {
     auto context = gl::createContext(gl::defaultBackend());
+    nlohmann::ordered_json record;
+    if (std::ifstream in(kRecordFile); in) record = nlohmann::ordered_json::parse(in);
+    // A pass's share of the work is a property of the renderer: a GPU's rasterizer and compute
+    // units relate nothing like llvmpipe's threads. Ratios recorded on one family of renderer
+    // (the name before its details, "llvmpipe" or "NVIDIA H200") guard only that family.
+    if (!recording() && record.contains(key)) {
+        const std::string recordedRenderer = record[key]["renderer"].get<std::string>();
+        if (rendererFamily(recordedRenderer) != rendererFamily(context->info().renderer))
+            GTEST_SKIP() << key << "'s ratios were recorded on " << recordedRenderer << ", not on "
+                         << context->info().renderer << "; record them there with VCT_PERF_GUARD_RECORD=1";
+    }
     Renderer renderer(scene, guardSettings(voxelLevels));
     bench::PerfCalibration calibration;
     const bench::PassRatios measured =
@@ -60,8 +78,6 @@ void guard(const std::string& key, const Scene& scene, int voxelLevels) {
     std::printf("[ perf     ] %s: calibration compute %.1f ms, raster %.1f ms\n", key.c_str(),
                 measured.computeCalibrationMs, measured.rasterCalibrationMs);
 
-    nlohmann::ordered_json record;
-    if (std::ifstream in(kRecordFile); in) record = nlohmann::ordered_json::parse(in);
     if (recording()) {
         nlohmann::ordered_json passes;
         for (const bench::PassRatio& p : measured.passes)

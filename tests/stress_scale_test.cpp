@@ -57,9 +57,11 @@ TEST(StressScale, SameOccupiedVoxelsAtEveryScaleAndOffset) {
 
 TEST(StressScale, SameHdrImageAtEveryScaleAndOffset) {
     // Tolerance: float rounding of positions relative to the origin differs between the variants
-    // (1 ulp), which can move a rasterized edge or a shadow-map texel by a hair. Stated and
+    // (1 ulp), which can move a rasterized edge or a shadow-map texel by a hair; a GPU's
+    // approximate reciprocals and fused multiply-adds round more coarsely than llvmpipe. Stated and
     // asserted: relative difference ≤ 1e-3 for 99.8 % of the values, ≤ 1 % everywhere, and a mean
-    // relative difference ≤ 1e-4 over the image (floor 1e-3 W/(m²·sr) against near-black pixels).
+    // relative difference ≤ 5e-4 over the image (floor 1e-3 W/(m²·sr) against near-black pixels),
+    // far below one step of an 8-bit display; a lost digit of precision is well above it.
     const Scene unit = makeCornellBox();
     const RenderSettings settings = smallSettings(64, 48, 6, 512);
     const ImageF reference = renderInProcess(unit, unit.cameras[0], settings);
@@ -72,7 +74,7 @@ TEST(StressScale, SameHdrImageAtEveryScaleAndOffset) {
         EXPECT_EQ(d.nonFinite, 0u) << v.name;
         EXPECT_LE(d.fractionOver, 0.002) << v.name;
         EXPECT_LE(d.maxRelative, 0.01) << v.name;
-        EXPECT_LE(d.meanRelative, 1e-4) << v.name;
+        EXPECT_LE(d.meanRelative, 5e-4) << v.name;
         std::printf("[ scale    ] %-13s image: mean relative difference %.2e, max %.2e, %.3f %% of values off by > 1e-3\n",
                     v.name.c_str(), d.meanRelative, d.maxRelative, 100.0 * d.fractionOver);
     }
