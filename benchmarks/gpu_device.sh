@@ -1,0 +1,46 @@
+#!/usr/bin/env bash
+# On an offline, bare GPU machine, from the repository root, with what benchmarks/gpu_bundle.sh
+# packed beside it (.gl/, .gpu/): unpack the loaders and libraries, time Sponza with
+# benchmarks/gpu.sh, render one 1920x1080 picture at 512³, then run the test suite on EGL.
+# Everything lands in $OUT/gpu_results.tar ($OUT defaults to /tmp/vct_gpu): the results
+# gpu.sh wrote, the picture, the ctest log and steps.log, the one-line account of each step.
+# Tests that need OSMesa or Embree fail there by construction (the stubs); the rest must pass.
+set -uo pipefail
+cd "$(dirname "$0")/.."
+root=$PWD
+out=${OUT:-/tmp/vct_gpu}/gpu_results
+mkdir -p "$out"
+step() { echo "== $*" | tee -a "$out/steps.log"; }
+
+for deb in .gl/*.deb; do dpkg -x "$deb" /; done
+ldconfig
+mkdir -p /tmp/vct_libs build/tests
+tar -xJf .gpu/libs.tar.xz -C /tmp/vct_libs && tar -xJf .gpu/build.tar.xz -C .gpu
+cp .gpu/build/vct .gpu/build/CTestTestfile.cmake build/ && cp .gpu/build/tests/* build/tests/
+export LD_LIBRARY_PATH=/tmp/vct_libs/libs
+# The binaries and ctest's files name the folder they were built in; this checkout stands in.
+built_in=$(sed -n "s/^# Source directory: //p" build/CTestTestfile.cmake)
+[ -n "$built_in" ] && [ ! -e "$built_in" ] && mkdir -p "$(dirname "$built_in")" && ln -s "$root" "$built_in"
+export VCT_ASSET_DIR=$root/.gpu VCT_BACKEND=egl VCT_SHADER_DIR=$root/shaders
+step "$(date -u +%FT%TZ) $(nvidia-smi -L 2>&1 | head -1)"
+
+check() { timeout 120 build/vct render -q --scene cornell --width 64 --height 48 --voxel-levels 5 --out "$out/check.png" --timings "$out/check.json" >"$out/check.log" 2>&1; }
+if ! check; then
+    step "EGL check failed ($(tail -1 "$out/check.log")); again with NVIDIA's EGL vendor file"
+    export __EGL_VENDOR_LIBRARY_FILENAMES=/usr/local/nvidia/share/glvnd/egl_vendor.d/10_nvidia.json
+    check || step "EGL still failing: $(tail -3 "$out/check.log")"
+fi
+step "renderer: $(sed -n 's/^ *"renderer": "\(.*\)",*$/\1/p' "$out/check.json")"
+
+start=$SECONDS
+timeout 300 bash benchmarks/gpu.sh --no-build --no-tests >"$out/gpu.log" 2>&1
+step "gpu.sh: exit $? in $((SECONDS - start)) s"
+cp benchmarks/results/gpu_* "$out/" 2>/dev/null
+start=$SECONDS
+timeout 90 build/vct render -q --scene sponza --voxel-levels 9 --width 1920 --height 1080 --frames 2 \
+    --out "$out/sponza_1080p_L9.png" --timings "$out/sponza_1080p_L9.json" >"$out/picture.log" 2>&1
+step "picture: exit $? in $((SECONDS - start)) s"
+start=$SECONDS
+(cd build && timeout 200 ctest -j"$(nproc)" --output-on-failure --timeout 150) >"$out/ctest.log" 2>&1
+step "ctest: exit $? in $((SECONDS - start)) s: $(grep -E 'tests passed|tests failed' "$out/ctest.log")"
+(cd "$out/.." && tar -cf gpu_results.tar gpu_results && rm -rf gpu_results)
