@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # The engine on a GPU, in one command: build, run the whole test suite on the EGL backend, then
-# time Sponza pass by pass in three scenarios (a full frame, a frame after the light moved, a frame
-# after the camera moved) at 256³ and 512³, and write the table with the GL renderer's name.
+# warm the GPU up, time Sponza pass by pass in three scenarios (a full frame, a frame after the
+# light moved, a frame after the camera moved) at 256³ and 512³, and write the table with the GL
+# renderer's name.
 #
 #   bash benchmarks/gpu.sh              1920x1080, voxel levels 8 and 9 (on a GPU)
 #   bash benchmarks/gpu.sh --small      320x180, voxel levels 6 and 7: the same steps, minutes on llvmpipe
@@ -39,6 +40,13 @@ if [ "$tests" = 1 ]; then
     tests_line="$status: $(grep -E 'tests passed|tests failed' "$scratch/ctest.log" | tail -1)"
     echo "gpu.sh: tests $tests_line" >&2
 fi
+
+# A GPU idles at a low clock and raises it only under sustained load (docs/benchmark.md, "On a
+# GPU"): without this warm-up the first scenarios would be timed at a clock the later ones do not
+# have. Twenty full frames keep it busy for seconds.
+echo "gpu.sh: warming the GPU up (Sponza, 20 full frames)..." >&2
+./build/vct render -q --scene sponza --voxel-levels "${levels[0]}" --width "$width" --height "$height" --frames 20 \
+    --full-frames --out "$scratch/warm_up.png"
 
 declare -A scenario_options=(
     [full]="--full-frames"

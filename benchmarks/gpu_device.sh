@@ -32,9 +32,10 @@ if ! check; then
 fi
 step "renderer: $(sed -n 's/^ *"renderer": "\(.*\)",*$/\1/p' "$out/check.json")"
 
-start=$SECONDS
+clock() { nvidia-smi --query-gpu=clocks.sm,clocks.mem --format=csv,noheader 2>/dev/null | head -1; }
+start=$SECONDS before=$(clock)
 timeout 300 bash benchmarks/gpu.sh --no-build --no-tests >"$out/gpu.log" 2>&1
-step "gpu.sh: exit $? in $((SECONDS - start)) s"
+step "gpu.sh: exit $? in $((SECONDS - start)) s (SM, memory clock before: $before; after: $(clock))"
 cp benchmarks/results/gpu_* "$out/" 2>/dev/null
 start=$SECONDS
 timeout 90 build/vct render -q --scene sponza --voxel-levels 9 --width 1920 --height 1080 --frames 2 \
