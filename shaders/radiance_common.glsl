@@ -15,13 +15,25 @@ layout(std430, binding = SSBO_BORDER_LIST) buffer BorderList { uint borderList[]
 const uint BORDER_COUNTS = BORDER_COUNT_SLOT;
 const uint MISSED_COUNT = MISSED_COUNT_SLOT;
 
-// Marks `node` of `level` touched; the first to do so appends it to the level's list and gets true.
-bool touch(uint node, int level) {
-    if (atomicExchange(touchedFlag[node], 1u) != 0u) return false;
-    uint slot = atomicAdd(listCounts[level], 1u);
-    touchedList[uLevelStart[level] + slot] = node;
-    return true;
+// A node's touched flag: bit 0 once it is on its level's touched list; bit 1 once a photon landed
+// in it (inject.comp, which then also touches the cells it pools its photons with).
+const uint TOUCHED_LISTED = 1u;
+const uint TOUCHED_BY_PHOTONS = 2u;
+
+// Sets `bits` of `node`'s touched flag; whoever sets TOUCHED_LISTED first appends the node to
+// `level`'s list. Returns the bits that were set before: a caller acts on a bit once, whichever
+// invocation came first, so what gets touched does not depend on the order they run in.
+uint touchWith(uint node, int level, uint bits) {
+    uint before = atomicOr(touchedFlag[node], bits | TOUCHED_LISTED);
+    if ((before & TOUCHED_LISTED) == 0u) {
+        uint slot = atomicAdd(listCounts[level], 1u);
+        touchedList[uLevelStart[level] + slot] = node;
+    }
+    return before;
 }
+
+// Marks `node` of `level` touched; the first to do so appends it to the level's list and gets true.
+bool touch(uint node, int level) { return (touchWith(node, level, TOUCHED_LISTED) & TOUCHED_LISTED) == 0u; }
 
 // A slab's radiance for the pools: `seen` is what reaches its front face (mean over its cross-
 // section), `alpha` its opacity (1 − mean transmittance), `tau` its density, `length` its length
