@@ -131,6 +131,25 @@ std::string readFile(const std::filesystem::path& path) {
     return {std::istreambuf_iterator<char>(in), {}};
 }
 
+// Renders `options` (a vct command line) with 1 and 3 llvmpipe threads and expects the same HDR
+// bytes, more than `minBytes` of them.
+void expectSameImageWithOneAndThreeThreads(const std::string& name, const std::string& options, std::size_t minBytes) {
+    const auto dir = testDir();
+    std::string reference;
+    for (const char* threads : {"1", "3"}) {
+        const auto out = dir / (name + threads);
+        const CommandResult result =
+            runVct(options + "--out " + out.string() + ".png --hdr-out " + out.string() + ".pfm", std::string("LP_NUM_THREADS=") + threads);
+        ASSERT_EQ(result.exitCode, 0) << result.output;
+        const std::string bytes = readFile(out.string() + ".pfm");
+        ASSERT_GT(bytes.size(), minBytes);
+        if (reference.empty())
+            reference = bytes;
+        else
+            EXPECT_TRUE(bytes == reference) << name << ", " << threads << " threads: the image differs from 1 thread's";
+    }
+}
+
 }  // namespace
 
 TEST(StressDeterminism, ThreeRendersGiveBitIdenticalVoxelPoolsAndImages) {
@@ -153,22 +172,9 @@ TEST(StressDeterminism, ThreeRendersGiveBitIdenticalVoxelPoolsAndImages) {
 TEST(StressDeterminism, BouncesAndPixelSamplesGiveBitIdenticalImages) {
     // Three bounces (gathers at every voxel, the radiance filtered three times) and eight jittered
     // samples per pixel, rendered with 1 and 3 llvmpipe threads: the same bytes.
-    const auto dir = testDir();
-    const std::string options =
-        " render -q --scene cornell --width 48 --height 36 --voxel-levels 5 --light-view-res 256 --bounces 3 --samples 8 ";
-    std::string reference;
-    for (const char* threads : {"1", "3"}) {
-        const auto out = dir / (std::string("threads") + threads);
-        const CommandResult result =
-            runVct(options + "--out " + out.string() + ".png --hdr-out " + out.string() + ".pfm", std::string("LP_NUM_THREADS=") + threads);
-        ASSERT_EQ(result.exitCode, 0) << result.output;
-        const std::string bytes = readFile(out.string() + ".pfm");
-        ASSERT_GT(bytes.size(), 48u * 36 * 3 * 4);
-        if (reference.empty())
-            reference = bytes;
-        else
-            EXPECT_TRUE(bytes == reference) << threads << " threads: the image differs from 1 thread's";
-    }
+    expectSameImageWithOneAndThreeThreads(
+        "bounces", " render -q --scene cornell --width 48 --height 36 --voxel-levels 5 --light-view-res 256 --bounces 3 --samples 8 ",
+        48u * 36 * 3 * 4);
     std::printf("[ determinism] 3 bounces and 8 samples per pixel: bit-identical with 1 and 3 threads\n");
 }
 
@@ -178,21 +184,8 @@ TEST(StressDeterminism, SponzaIsBitIdenticalWithOneAndThreeThreads) {
     // whether a cell was first touched by its own photon or as another cell's partner, so the
     // indirect light changed with the order the threads ran in (and from run to run on a GPU).
     if (!findAsset("sponza/Sponza.gltf")) GTEST_SKIP() << "Sponza not found (" << assetSearchPathDescription() << ")";
-    const auto dir = testDir();
-    std::string reference;
-    for (const char* threads : {"1", "3"}) {
-        const auto out = dir / (std::string("sponza") + threads);
-        const CommandResult result = runVct(" render -q --scene sponza --width 160 --height 90 --voxel-levels 7 --aov indirect"
-                                            " --out " + out.string() + ".png --hdr-out " + out.string() + ".pfm",
-                                            std::string("LP_NUM_THREADS=") + threads);
-        ASSERT_EQ(result.exitCode, 0) << result.output;
-        const std::string bytes = readFile(out.string() + ".pfm");
-        ASSERT_GT(bytes.size(), 160u * 90 * 3 * 4);
-        if (reference.empty())
-            reference = bytes;
-        else
-            EXPECT_TRUE(bytes == reference) << threads << " threads: Sponza's indirect light differs from 1 thread's";
-    }
+    expectSameImageWithOneAndThreeThreads(
+        "sponza", " render -q --scene sponza --width 160 --height 90 --voxel-levels 7 --aov indirect ", 160u * 90 * 3 * 4);
 }
 
 TEST(StressDeterminism, ThreadCountsAndBackendsGiveBitIdenticalImages) {
