@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # The engine on a GPU, in one command: build, run the whole test suite on the EGL backend, then
-# warm the GPU up, time Sponza pass by pass in three scenarios (a full frame, a frame after the
-# light moved, a frame after the camera moved) at 256³ and 512³, and write the table with the GL
-# renderer's name.
+# warm the GPU up, time Sponza pass by pass in four scenarios (a full frame, the same with every
+# pass finished before the next, a frame after the light moved, a frame after the camera moved) at
+# 256³ and 512³, and write the table with the GL renderer's name.
 #
 #   bash benchmarks/gpu.sh              1920x1080, voxel levels 8 and 9 (on a GPU)
 #   bash benchmarks/gpu.sh --small      320x180, voxel levels 6 and 7: the same steps, minutes on llvmpipe
@@ -48,12 +48,16 @@ echo "gpu.sh: warming the GPU up (Sponza, 20 full frames)..." >&2
 ./build/vct render -q --scene sponza --voxel-levels "${levels[0]}" --width "$width" --height "$height" --frames 20 \
     --full-frames --out "$scratch/warm_up.png"
 
+# full_finished: the full frame again with glFinish after every pass, so that each pass's time is
+# its own (without it a pass's time can hold the tail of the one before); its total is not a
+# frame's, the others' are.
 declare -A scenario_options=(
     [full]="--full-frames"
+    [full_finished]="--full-frames --finish-each-pass"
     [light_moved]="--light-path orbit"
     [camera_moved]="--camera-path orbit"
 )
-scenarios=(full light_moved camera_moved)
+scenarios=(full full_finished light_moved camera_moved)
 for level in "${levels[@]}"; do
     for scenario in "${scenarios[@]}"; do
         echo "gpu.sh: Sponza ${width}x${height}, 2^$level voxels, $scenario..." >&2
@@ -88,8 +92,10 @@ table="$out/gpu_${label}.md"
     echo
     echo "Written by \`benchmarks/gpu.sh$([ "$width" = 1920 ] || echo ' --small')\` on $(date -u +%Y-%m-%d) ($VCT_BACKEND backend)."
     echo "Sponza ${width}x${height}, the second frame of each scenario (the first builds everything; a"
-    echo "full frame re-runs every pass as if the geometry changed). GPU milliseconds per pass from"
-    echo "timer queries; a pass the scenario does not need is skipped (blank). Test suite: $tests_line."
+    echo "full frame re-runs every pass as if the geometry changed; full_finished is the same frame with"
+    echo "glFinish after every pass, whose per-pass times are each pass's own but whose total is not a"
+    echo "frame's). GPU milliseconds per pass from timer queries; a pass the scenario does not need is"
+    echo "skipped (blank). Test suite: $tests_line."
     echo
     passes=$(pass_times "$scratch/full_L${levels[0]}.json" | awk '$1 != "total" { print $1 }')
     header="| pass |" rule="|---|"
