@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # On an offline, bare GPU machine, from the repository root, with what benchmarks/gpu_bundle.sh
 # packed beside it (.gl/, .gpu/): unpack the loaders and libraries, time Sponza with
-# benchmarks/gpu.sh, render one 1920x1080 picture at 512³, then run the test suite on EGL.
+# benchmarks/gpu.sh, render one 1920x1080 picture at 512³, check that three renders agree, then run
+# the test suite on EGL.
 # Everything lands in $OUT/gpu_results.tar ($OUT defaults to /tmp/vct_gpu): the results
 # gpu.sh wrote, the picture, the ctest log and steps.log, the one-line account of each step.
 # Tests that need OSMesa or Embree fail there by construction (the stubs); the rest must pass.
@@ -41,6 +42,13 @@ start=$SECONDS
 timeout 90 build/vct render -q --scene sponza --voxel-levels 9 --width 1920 --height 1080 --frames 2 \
     --out "$out/sponza_1080p_L9.png" --timings "$out/sponza_1080p_L9.json" >"$out/picture.log" 2>&1
 step "picture: exit $? in $((SECONDS - start)) s"
+# Run-to-run determinism on this driver: the suite's determinism tests force OSMesa, so three
+# renders of Sponza's indirect light here must give one hash.
+hashes=$(for run in 1 2 3; do
+    timeout 60 build/vct render -q --scene sponza --width 160 --height 90 --voxel-levels 7 --aov indirect \
+        --out "$out/determinism.png" --hdr-out "$out/determinism.pfm" >/dev/null 2>&1 && md5sum <"$out/determinism.pfm"
+done | sort -u | wc -l)
+step "determinism: three renders of Sponza's indirect light, $hashes distinct hash(es)"
 start=$SECONDS
 (cd build && timeout 200 ctest -j"$(nproc)" --output-on-failure --timeout 150) >"$out/ctest.log" 2>&1
 step "ctest: exit $? in $((SECONDS - start)) s: $(grep -E 'tests passed|tests failed' "$out/ctest.log")"

@@ -1,10 +1,10 @@
 // The driver checks (engine/gl/driver_checks.hpp) on a frame that runs every pass: the octree
 // build, photons, two bounces and the cone trace, then a second frame after the light moved,
 // which reuses the first frame's buffers. Neither switch may change a bit of the image. Poisoned
-// buffers that changed it would mean a pass reads storage nobody wrote, which llvmpipe's zeroed
-// allocations hide and a GPU's leftovers do not; all barriers that changed it would mean a pass
-// asks for too few barrier bits (on llvmpipe, which finishes each dispatch before the next, only
-// a GPU can show that).
+// buffers and textures that changed it would mean a pass reads storage nobody wrote, which
+// llvmpipe's zeroed allocations hide and a GPU's leftovers do not; all barriers that changed it
+// would mean a pass asks for too few barrier bits (on llvmpipe, which finishes each dispatch
+// before the next, only a GPU can show that).
 #include <fstream>
 #include <iterator>
 #include <string>

@@ -21,4 +21,22 @@ bool poisonNewStorage() {
     return poison;
 }
 
+void poisonNewTexture(GLuint texture, GLenum internalFormat, int levels) {
+    if (!poisonNewStorage()) return;
+    const GLuint integers[4] = {0x7F7F7F7Fu, 0x7F7F7F7Fu, 0x7F7F7F7Fu, 0x7F7F7F7Fu};
+    const float floats[4] = {3.0e38f, 3.0e38f, 3.0e38f, 3.0e38f};
+    const float depth = 0.5f;
+    for (int level = 0; level < levels; ++level) {
+        switch (internalFormat) {
+            case GL_R32UI:
+            case GL_RG32UI:
+            case GL_RGBA32UI: glClearTexImage(texture, level, GL_RGBA_INTEGER, GL_UNSIGNED_INT, integers); break;
+            case GL_DEPTH_COMPONENT32F:
+            case GL_DEPTH_COMPONENT24:
+            case GL_DEPTH_COMPONENT16: glClearTexImage(texture, level, GL_DEPTH_COMPONENT, GL_FLOAT, &depth); break;
+            default: glClearTexImage(texture, level, GL_RGBA, GL_FLOAT, floats); break;
+        }
+    }
+}
+
 }  // namespace vct::gl

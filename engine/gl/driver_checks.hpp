@@ -4,9 +4,10 @@
 // or reads storage nobody wrote works there and fails on a GPU. Two environment variables:
 //   VCT_GL_ALL_BARRIERS=1  every memory barrier the engine issues covers every kind of access: an
 //                          image that changes with it names a pass that asks for too few bits.
-//   VCT_GL_POISON=1        new buffers start filled with 0x7F bytes (float 3.4e38, uint 2.1e9)
-//                          instead of what the driver happens to give: a pass that reads what
-//                          nobody wrote shows it on llvmpipe too.
+//   VCT_GL_POISON=1        new buffers start filled with 0x7F bytes (float 3.4e38, uint 2.1e9),
+//                          new textures with 3e38 (infinity in half floats, 1 in 8-bit
+//                          formats), 0x7F7F7F7F or depth 0.5, instead of what the driver happens
+//                          to give: a pass that reads what nobody wrote shows it on llvmpipe too.
 #include "gl/gl.hpp"
 
 namespace vct::gl {
@@ -17,5 +18,9 @@ void memoryBarrier(GLbitfield barriers);
 // Whether VCT_GL_POISON asks new buffers to be filled with the poison byte.
 bool poisonNewStorage();
 inline constexpr unsigned char kPoisonByte = 0x7F;
+
+// Under VCT_GL_POISON, fills every level of a texture just allocated with storage of
+// `internalFormat` with the poison value of its kind; otherwise does nothing.
+void poisonNewTexture(GLuint texture, GLenum internalFormat, int levels);
 
 }  // namespace vct::gl

@@ -38,6 +38,7 @@ Texture createTexture(GLenum target, const char* text) {
 Texture createTexture2D(GLenum internalFormat, int width, int height, int levels, const char* text) {
     Texture texture = createTexture(GL_TEXTURE_2D, text);
     glTextureStorage2D(texture.id(), levels, internalFormat, width, height);
+    poisonNewTexture(texture.id(), internalFormat, levels);
     glTextureParameteri(texture.id(), GL_TEXTURE_MIN_FILTER, levels > 1 ? GL_LINEAR_MIPMAP_LINEAR : GL_NEAREST);
     glTextureParameteri(texture.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
     glTextureParameteri(texture.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);

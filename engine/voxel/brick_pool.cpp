@@ -5,6 +5,7 @@
 
 #include "core/error.hpp"
 #include "gl/compute.hpp"
+#include "gl/driver_checks.hpp"
 
 namespace vct {
 
@@ -41,6 +42,7 @@ gl::Texture createBrickPool(glm::ivec3 bricksPerAxis, GLenum format, const char*
     gl::Texture t = gl::createTexture(GL_TEXTURE_3D, label);
     const glm::ivec3 size = 3 * bricksPerAxis;
     glTextureStorage3D(t.id(), 1, format, size.x, size.y, size.z);
+    gl::poisonNewTexture(t.id(), format, 1);
     for (GLenum wrap : {GL_TEXTURE_WRAP_S, GL_TEXTURE_WRAP_T, GL_TEXTURE_WRAP_R})
         glTextureParameteri(t.id(), wrap, GL_CLAMP_TO_EDGE);
     glTextureParameteri(t.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
