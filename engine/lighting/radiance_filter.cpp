@@ -1,7 +1,6 @@
 #include "lighting/radiance_filter.hpp"
 
 #include "gl/driver_checks.hpp"
-
 #include "voxel/brick_pool.hpp"
 
 namespace vct {

@@ -22,7 +22,7 @@ void ConeView::render(const Octree& octree, const RadianceVolume& radiance, cons
     gl::ComputeCall call(program_);
     setConeMarchUniforms(call, octree, radiance, cone);
     call.uniform("uViewTanHalfAngle", viewConeTan(settings));
-    image_.march(call, octree, camera, scene);
+    march(call, octree, camera, scene);
 }
 
 }  // namespace vct

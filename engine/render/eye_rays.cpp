@@ -19,17 +19,20 @@ EyeRays eyeRaysInVoxels(const Octree& octree, const Camera& camera, const Scene&
     return rays;
 }
 
-EyeRayImage::EyeRayImage(int width, int height, const char* label)
-    : width_(width), height_(height), texture_(gl::createTexture2D(GL_RGBA32F, width, height, 1, label)) {}
+EyeRayView::EyeRayView(int width, int height, const char* label, const char* shader)
+    : program_(gl::buildProgram({{GL_COMPUTE_SHADER, shader}})),
+      width_(width),
+      height_(height),
+      image_(gl::createTexture2D(GL_RGBA32F, width, height, 1, label)) {}
 
-void EyeRayImage::march(gl::ComputeCall& call, const Octree& octree, const Camera& camera, const Scene& scene) const {
+void EyeRayView::march(gl::ComputeCall& call, const Octree& octree, const Camera& camera, const Scene& scene) const {
     const EyeRays rays = eyeRaysInVoxels(octree, camera, scene, width_, height_);
     call.uniform("uEyeVoxel", rays.eye)
         .uniform("uForward", rays.forward)
         .uniform("uRight", rays.right)
         .uniform("uUp", rays.up)
         .uniform("uTanHalfFov", rays.tanHalfFov)
-        .image(gl::IMAGE_VOXEL_VIEW, texture_.id(), GL_WRITE_ONLY, GL_RGBA32F)
+        .image(gl::IMAGE_VOXEL_VIEW, image_.id(), GL_WRITE_ONLY, GL_RGBA32F)
         .dispatchImage(width_, height_, GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
 }
 

@@ -21,34 +21,25 @@ struct EyeRays {
 
 EyeRays eyeRaysInVoxels(const Octree& octree, const Camera& camera, const Scene& scene, int width, int height);
 
-// The image a debug view marches its eye rays into: one RGBA32F texel per output pixel, bound at
-// gl::IMAGE_VOXEL_VIEW.
-class EyeRayImage {
-public:
-    EyeRayImage(int width, int height, const char* label);
-    // Sets the eye rays of `camera` (uEyeVoxel, uForward, uRight, uUp, uTanHalfFov) and the image
-    // on `call`, then runs it once per pixel.
-    void march(gl::ComputeCall& call, const Octree& octree, const Camera& camera, const Scene& scene) const;
-    GLuint id() const { return texture_.id(); }
-    std::size_t bytes() const { return std::size_t(width_) * height_ * 16; }
-
-private:
-    int width_, height_;
-    gl::Texture texture_;
-};
-
-// A debug view that marches one ray or cone per pixel from the eye into an image of its own with
-// one compute shader (VoxelView, ConeView).
+// A debug view that marches one ray or cone per pixel from the eye, with one compute shader,
+// into an image of its own: one RGBA32F texel per output pixel, bound at gl::IMAGE_VOXEL_VIEW
+// (VoxelView, ConeView).
 class EyeRayView {
 public:
     GLuint image() const { return image_.id(); }
-    std::size_t bytes() const { return image_.bytes(); }
+    std::size_t bytes() const { return std::size_t(width_) * height_ * 16; }
 
 protected:
-    EyeRayView(int width, int height, const char* label, const char* shader)
-        : image_(width, height, label), program_(gl::buildProgram({{GL_COMPUTE_SHADER, shader}})) {}
-    EyeRayImage image_;
+    EyeRayView(int width, int height, const char* label, const char* shader);
+    // Sets the eye rays of `camera` (uEyeVoxel, uForward, uRight, uUp, uTanHalfFov) and the image
+    // on `call` (a call of program_ with the view's own inputs bound), then runs it once per pixel.
+    void march(gl::ComputeCall& call, const Octree& octree, const Camera& camera, const Scene& scene) const;
+
     gl::Program program_;
+
+private:
+    int width_, height_;
+    gl::Texture image_;
 };
 
 }  // namespace vct

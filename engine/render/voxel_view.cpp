@@ -28,7 +28,7 @@ void VoxelView::render(const Octree& octree, const RadianceVolume* radiance, con
         call.storage(gl::SSBO_CELL_RADIANCE, radiance->cellRadiance);
         bindDirectionalTexture(call, *radiance);
     }
-    image_.march(call, octree, camera, scene);
+    march(call, octree, camera, scene);
 }
 
 }  // namespace vct
