@@ -115,7 +115,7 @@ void run(const RenderOptions& o) {
     if (!o.hdrOut.empty()) writeHdrImage(o.hdrOut, hdr);
 
     TimingsReport report{context->info(), o.width, o.height, {}, renderer.memory(), std::nullopt,
-                         renderer.lastFrame(), renderer.statistics()};
+                         renderer.lastFrame(), renderer.statistics(), {}};
     if (renderer.octree()) {
         report.voxels = renderer.octree()->memory();
         if (logLevel() >= LogLevel::Info) std::printf("%s", formatVoxelMemory(*report.voxels).c_str());

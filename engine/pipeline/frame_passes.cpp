@@ -138,7 +138,7 @@ void traceCones(FrameResources& f, const FrameView& v) {
     if (!f.coneTrace) f.coneTrace = std::make_unique<ConeTrace>(f.settings.width, f.settings.height);
     f.coneTrace->render(*f.gbuffer, f.svo->octree(), *f.radiance, frameCones(f.settings), f.settings.giResolution,
                         v.sample, f.settings.giFilter);
-    f.statistics.cones = f.coneTrace->statistics();
+    f.coneStatisticsPending = true;
 }
 
 void renderVoxelView(FrameResources& f, const FrameView& v) {

@@ -54,7 +54,10 @@ struct FrameResources {
     std::unique_ptr<VoxelView> voxelView;                // DebugImage
     std::unique_ptr<ConeView> coneView;                  // DebugImage (--view cones)
     std::unique_ptr<Composite> composite;                // Output
-    FrameStatistics statistics;
+    // Mutable: the cone counters are read back only when someone asks (Renderer::statistics), so
+    // that a frame never waits for the cone pass to finish just to count its samples.
+    mutable FrameStatistics statistics;
+    mutable bool coneStatisticsPending = false;
 
     std::uint64_t version(Input input) const { return versions[std::size_t(input)]; }
 };

@@ -127,6 +127,14 @@ void Renderer::run(const std::optional<Camera>& camera, ResourceSet targets, boo
     gl::checkErrors("rendering a frame");
 }
 
+const FrameStatistics& Renderer::statistics() const {
+    if (frame_.coneStatisticsPending && frame_.coneTrace) {
+        frame_.statistics.cones = frame_.coneTrace->statistics();
+        frame_.coneStatisticsPending = false;
+    }
+    return frame_.statistics;
+}
+
 std::vector<MemoryPool> Renderer::memory() const {
     std::vector<MemoryPool> pools = {{"scene geometry and textures", frame_.gpuScene->bytes()},
                                      {"gbuffer", frame_.gbuffer->bytes()},

@@ -45,7 +45,8 @@ public:
     void buildOctree();
     // Every pass of the last frame, ran or skipped, with the reason.
     const std::vector<PassRun>& lastFrame() const { return lastFrame_; }
-    const FrameStatistics& statistics() const { return frame_.statistics; }
+    // The last frame's statistics; the cone counters are read back from the GPU here, on request.
+    const FrameStatistics& statistics() const;
 
     ImageF readHdr() const { return frame_.composite->readHdr(); }
     Image8 readLdr() const { return frame_.composite->readLdr(); }
