@@ -73,6 +73,42 @@ TEST(Cli, GlfwBackendRendersInAHiddenWindowUnderX) {
     EXPECT_LE(maxDifference, 1e-6);
 }
 
+// `--dark-material` takes a material's reflected light out of the engine and the path tracer alike,
+// so the two can be compared light source by light source: without the red wall's light, the red
+// share of the indirect light falls, and falls the same way in both.
+TEST(Cli, DarkMaterialTakesItsLightOutOfEngineAndReferenceAlike) {
+    const auto dir = test::testDir();
+    auto redOverGreen = [](const std::filesystem::path& path) {
+        const ImageF image = readHdrImage(path);
+        double red = 0, green = 0;
+        for (int y = 0; y < image.height; ++y)
+            for (int x = 0; x < image.width; ++x) {
+                red += image.at(x, y)[0];
+                green += image.at(x, y)[1];
+            }
+        return red / green;
+    };
+    double engine[2], reference[2];
+    for (int dark = 0; dark < 2; ++dark) {
+        const std::string option = dark ? " --dark-material red " : " ";
+        const auto engineOut = dir / ("engine" + std::to_string(dark) + ".pfm");
+        const auto referenceOut = dir / ("reference" + std::to_string(dark) + ".pfm");
+        ASSERT_EQ(test::runVct("render -q --scene cornell" + kSmall + option + "--aov gi --hdr-out " + engineOut.string() +
+                               " --out " + (dir / "e.png").string())
+                      .exitCode,
+                  0);
+        const auto result = test::runVct("reference -q --scene cornell --width 64 --height 48 --spp 16 --bounces 1" +
+                                         option + "--out " + (dir / "r.pfm").string() + " --indirect-out " +
+                                         referenceOut.string());
+        ASSERT_EQ(result.exitCode, 0) << result.output;
+        engine[dark] = redOverGreen(engineOut);
+        reference[dark] = redOverGreen(referenceOut);
+    }
+    EXPECT_LT(engine[1], 0.8 * engine[0]) << "the red wall's bleeding must leave the engine's indirect light";
+    EXPECT_LT(reference[1], 0.8 * reference[0]) << "and the reference's";
+    EXPECT_NEAR(engine[1] / reference[1], 1.0, 0.1) << "engine " << engine[1] << ", reference " << reference[1];
+}
+
 TEST(Cli, InfoPrintsCountsAndBounds) {
     const auto result = test::runVct("info --scene cornell");
     ASSERT_EQ(result.exitCode, 0) << result.output;
@@ -152,6 +188,8 @@ TEST(CliBadInput, UnknownPresetBackendAndValues) {
     expectCleanError(test::runVct("render --scene cornell --spot-angles 50,20" + kSmall + "--out /tmp/x.png"), "inner");
     expectCleanError(test::runVct("render --scene cornell" + kSmall + "--out /no/such/dir/x.png"), "/no/such/dir");
     expectCleanError(test::runVct("render --scene cornell --cone-rays 65" + kSmall + "--out /tmp/x.png"), "1..64");
+    expectCleanError(test::runVct("render --scene cornell --dark-material Red" + kSmall + "--out /tmp/x.png"),
+                     "white, red, green");
     expectCleanError(test::runVct("render --scene cornell --cone-rays 8 --only-cone 5" + kSmall + "--out /tmp/x.png"),
                      "--only-cone");
 }

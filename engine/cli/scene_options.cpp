@@ -1,5 +1,7 @@
 #include "cli/scene_options.hpp"
 
+#include <string_view>
+
 #include "core/error.hpp"
 #include "scene/scene_loader.hpp"
 
@@ -13,6 +15,46 @@ glm::dvec3 toVec3(const std::vector<double>& values, const char* option) {
 
 void addVector(CLI::App& command, const std::string& name, std::vector<double>& target, const std::string& help) {
     command.add_option(name, target, help)->delimiter(',')->type_name("X,Y,Z");
+}
+
+// Whether `name` matches `pattern`, in which '*' stands for any run of characters.
+bool matchesPattern(std::string_view name, std::string_view pattern) {
+    std::size_t n = 0, p = 0, starAt = std::string_view::npos, matchedAtStar = 0;
+    while (n < name.size()) {
+        if (p < pattern.size() && pattern[p] == '*') {
+            starAt = p++;
+            matchedAtStar = n;
+        } else if (p < pattern.size() && pattern[p] == name[n]) {
+            ++p;
+            ++n;
+        } else if (starAt != std::string_view::npos) {
+            p = starAt + 1;
+            n = ++matchedAtStar;
+        } else {
+            return false;
+        }
+    }
+    while (p < pattern.size() && pattern[p] == '*') ++p;
+    return p == pattern.size();
+}
+
+// A material that reflects nothing still blocks light and casts shadows: the difference between
+// a frame with and without it is the light that reaches the image off that material. Done the
+// same way in `render` and `reference`, it says which surfaces' light the engine gets wrong.
+void darkenMaterials(Scene& scene, const std::vector<std::string>& patterns) {
+    for (const std::string& pattern : patterns) {
+        std::size_t matched = 0;
+        for (Material& material : scene.materials)
+            if (matchesPattern(material.name, pattern)) {
+                material.baseColor = glm::vec3(0.0f);
+                ++matched;
+            }
+        if (matched) continue;
+        std::string names;
+        for (const Material& material : scene.materials) names += (names.empty() ? "" : ", ") + material.name;
+        fail("--dark-material '", pattern, "' matches none of the scene's materials (", names,
+             "); give a name from that list, with '*' for any characters");
+    }
 }
 
 const Light* firstOfType(const std::vector<Light>& lights, LightType type) {
@@ -45,10 +87,15 @@ void addSceneOptions(CLI::App& command, SceneOptions& o, bool withCameraAndLight
     addVector(command, "--point-pos", o.pointPosition, "point light position");
     command.add_option("--point-intensity", o.pointIntensity, "point light: intensity I in W/sr in every direction");
     addVector(command, "--light-color", o.lightColor, "linear RGB tint of the lights given on the command line");
+    command.add_option("--dark-material", o.darkMaterials,
+                       "diagnostic: this material (a name, '*' for any characters; repeatable) reflects no light; "
+                       "it still blocks light, and its emission stays")
+        ->type_name("NAME");
 }
 
 Scene loadSceneFromOptions(const SceneOptions& o) {
     Scene scene = loadScene(o.scene, LoadOptions{o.sanitize});
+    darkenMaterials(scene, o.darkMaterials);
     const bool sun = !o.sunDirection.empty() || o.sunIrradiance;
     const bool spot = !o.spotPosition.empty() || !o.spotDirection.empty() || o.spotIntensity || !o.spotAngles.empty();
     const bool point = !o.pointPosition.empty() || o.pointIntensity;

@@ -23,6 +23,7 @@ struct SceneOptions {
     std::vector<double> pointPosition;
     std::optional<double> pointIntensity;
     std::vector<double> lightColor;
+    std::vector<std::string> darkMaterials;  // names or patterns with '*': albedo 0
 };
 
 void addSceneOptions(CLI::App& command, SceneOptions& options, bool withCameraAndLights);
@@ -30,7 +31,7 @@ void addSceneOptions(CLI::App& command, SceneOptions& options, bool withCameraAn
 // Loads the scene and replaces its lights when any --sun-* / --spot-* / --point-* option is given
 // (a sun option gives one sun, a spot option one spot, a point option one point light, together
 // they give each; parameters not given keep the scene's own light of that type, or a documented
-// default).
+// default). Materials named by --dark-material reflect nothing (albedo 0, emission kept).
 Scene loadSceneFromOptions(const SceneOptions& options);
 
 // The scene's default camera, or the chosen preset, with --eye/--target/--up/--fov applied.
