@@ -1,0 +1,89 @@
+#!/usr/bin/env bash
+# Where the indirect light comes from, surface by surface: for each Sponza preset, the engine's
+# indirect light (`--aov gi`) and the path tracer's (`--indirect-out`, one bounce) with all
+# materials, then with the floor's and with the fabrics' reflection taken out (`--dark-material`,
+# the same in both). The difference, on every pixel but the material's own (whose shading the
+# option darkens too; found from `--aov albedo`), is the light off those surfaces; its ratio engine /
+# reference says which surfaces' light the engine gets wrong, and "the rest" is the light off
+# everything else.
+#   bash benchmarks/light_sources.sh          (about ten minutes on llvmpipe; needs Sponza)
+# Writes benchmarks/results/light_sources_<renderer>.md.
+source "$(dirname "$0")/scratch_setup.sh"
+spp=256
+views=(CameraMain CameraAlternate CameraBalcony CameraAlcove)
+materials=(Floor 'Fabric*')
+size=(--width 320 --height 180)
+for view in "${views[@]}"; do
+  for index in -1 "${!materials[@]}"; do
+    dark=()
+    [ "$index" -ge 0 ] && dark=(--dark-material "${materials[$index]}")
+    echo "light sources: $view, ${dark[*]:-all materials}..." >&2
+    ./build/vct -q reference --scene sponza --camera "$view" "${size[@]}" "${dark[@]}" --spp $spp --bounces 1 \
+      --out "$work/r.pfm" --indirect-out "$work/$view$index-reference.pfm"
+    ./build/vct -q render --scene sponza --camera "$view" "${size[@]}" "${dark[@]}" --aov gi \
+      --hdr-out "$work/$view$index-engine.pfm" --out "$work/e.png" --timings "$work/timings.json"
+    ./build/vct -q render --scene sponza --camera "$view" "${size[@]}" "${dark[@]}" --aov albedo \
+      --hdr-out "$work/$view$index-albedo.pfm" --out "$work/e.png"
+  done
+done
+/usr/bin/python3 - "$work" "$out" "$spp" "${views[@]}" -- "${materials[@]}" <<'PY'
+import sys
+sys.path.insert(0, "benchmarks")
+from report import luminance, read_pfm, renderer_of, report_head, write_report
+work, out, spp = sys.argv[1], sys.argv[2], sys.argv[3]
+split = sys.argv.index("--")
+views, materials = sys.argv[4:split], sys.argv[split + 1:]
+
+def luminances(path):  # per pixel, rows top first
+    width, height, pixels = read_pfm(path)
+    return width, height, [luminance(pixels[(height - 1 - y) * width + x]) for y in range(height) for x in range(width)]
+
+def cells(path, keep=None):  # summed luminance of the image and of its 3×3 cells (row 0 at the top)
+    width, height, values = luminances(path)
+    total, grid = 0.0, [0.0] * 9
+    for i, value in enumerate(values):
+        if keep is None or keep[i]:
+            total += value
+            grid[(i // width) * 3 // height * 3 + (i % width) * 3 // width] += value
+    return total, grid
+
+def not_own(view, index):  # pixels that do not show the darkened material itself
+    _, _, before = luminances(f"{work}/{view}-1-albedo.pfm")
+    _, _, after = luminances(f"{work}/{view}{index}-albedo.pfm")
+    return [not (b > 0 and a <= 0) for b, a in zip(before, after)]
+
+def ratios(engine, reference, significant):
+    return " ".join(f"{e / r:.2f}" if keep and r > 0 else "–" for e, r, keep in zip(engine, reference, significant))
+
+renderer, tag = renderer_of(f"{work}/timings.json")
+lines = report_head("Where the indirect light comes from, surface by surface", renderer, "light_sources.sh",
+                    f"Sponza's presets at 320×180, 256³, default settings; the engine's indirect light (`vct render "
+                    f"--aov gi`) and the path tracer's (`vct reference --bounces 1 --spp {spp} --indirect-out`), "
+                    "with all materials and with the named ones dark (`--dark-material`, albedo 0 in both). The "
+                    "light off a material is the difference, over the pixels that do not show the material itself "
+                    "(the option darkens those too). Columns: the share of the reference's indirect light there "
+                    "that comes off the material; engine / reference of that light, over the image and per 3×3 "
+                    "cell (row 0 at the top, cells where it is at most 5 % of its mean over the image: –); "
+                    "engine / reference of the light off every other surface.",
+                    ["view", "material", "share of the reference's", "engine / reference", "per cell",
+                     "the rest: engine / reference"])
+for view in views:
+    engine_all, engine_all_cells = cells(f"{work}/{view}-1-engine.pfm")
+    reference_all, reference_all_cells = cells(f"{work}/{view}-1-reference.pfm")
+    lines.append(f"| {view} | (all) | 100 % | {engine_all / reference_all:.2f} | "
+                 f"{ratios(engine_all_cells, reference_all_cells, [r > 0.05 * reference_all / 9 for r in reference_all_cells])} | |")
+    for index, material in enumerate(materials):
+        keep = not_own(view, index)
+        engine_all, engine_all_cells = cells(f"{work}/{view}-1-engine.pfm", keep)
+        reference_all, reference_all_cells = cells(f"{work}/{view}-1-reference.pfm", keep)
+        engine_rest, engine_rest_cells = cells(f"{work}/{view}{index}-engine.pfm", keep)
+        reference_rest, reference_rest_cells = cells(f"{work}/{view}{index}-reference.pfm", keep)
+        engine_off = [a - b for a, b in zip(engine_all_cells, engine_rest_cells)]
+        reference_off = [a - b for a, b in zip(reference_all_cells, reference_rest_cells)]
+        reference_share = 1.0 - reference_rest / reference_all
+        engine_ratio = (engine_all - engine_rest) / max(reference_all - reference_rest, 1e-30)
+        significant = [r > 0.05 * max(reference_all - reference_rest, 1e-30) / 9 for r in reference_off]
+        lines.append(f"| {view} | `{material}` | {100 * reference_share:.0f} % | {engine_ratio:.2f} | "
+                     f"{ratios(engine_off, reference_off, significant)} | {engine_rest / reference_rest:.2f} |")
+write_report(f"{out}/light_sources_{tag}.md", lines)
+PY
