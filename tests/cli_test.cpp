@@ -90,7 +90,7 @@ TEST(Cli, DarkMaterialTakesItsLightOutOfEngineAndReferenceAlike) {
     };
     double engine[2], reference[2];
     for (int dark = 0; dark < 2; ++dark) {
-        const std::string option = dark ? " --dark-material red " : " ";
+        const std::string option = dark ? " --dark-material 'r*d' " : " ";  // matches "red" only
         const auto engineOut = dir / ("engine" + std::to_string(dark) + ".pfm");
         const auto referenceOut = dir / ("reference" + std::to_string(dark) + ".pfm");
         ASSERT_EQ(test::runVct("render -q --scene cornell" + kSmall + option + "--aov gi --hdr-out " + engineOut.string() +

@@ -39,8 +39,9 @@ bool matchesPattern(std::string_view name, std::string_view pattern) {
 }
 
 // A material that reflects nothing still blocks light and casts shadows: the difference between
-// a frame with and without it is the light that reaches the image off that material. Done the
-// same way in `render` and `reference`, it says which surfaces' light the engine gets wrong.
+// a frame with and without it is, on the pixels that do not show the material itself (which it
+// darkens too), the light that reaches the image off that material. Done the same way in `render`
+// and `reference`, it says which surfaces' light the engine gets wrong.
 void darkenMaterials(Scene& scene, const std::vector<std::string>& patterns) {
     for (const std::string& pattern : patterns) {
         std::size_t matched = 0;
