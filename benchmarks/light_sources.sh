@@ -27,6 +27,7 @@ for view in "${views[@]}"; do
   done
 done
 /usr/bin/python3 - "$work" "$out" "$spp" "${views[@]}" -- "${materials[@]}" <<'PY'
+import functools
 import sys
 sys.path.insert(0, "benchmarks")
 from report import luminance, read_pfm, renderer_of, report_head, write_report
@@ -34,9 +35,10 @@ work, out, spp = sys.argv[1], sys.argv[2], sys.argv[3]
 split = sys.argv.index("--")
 views, materials = sys.argv[4:split], sys.argv[split + 1:]
 
+@functools.lru_cache(maxsize=None)  # each image is read once, though every material's rows use it
 def luminances(path):  # per pixel, rows top first
     width, height, pixels = read_pfm(path)
-    return width, height, [luminance(pixels[(height - 1 - y) * width + x]) for y in range(height) for x in range(width)]
+    return width, height, tuple(luminance(pixels[(height - 1 - y) * width + x]) for y in range(height) for x in range(width))
 
 def cells(path, keep=None):  # summed luminance of the image and of its 3×3 cells (row 0 at the top)
     width, height, values = luminances(path)

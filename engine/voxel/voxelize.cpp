@@ -71,7 +71,7 @@ void Voxelizer::run(const GpuScene& gpuScene, const Scene& scene, const VoxelGri
         gpuScene.draw(p);
         gl::endRasterPass();
         gl::memoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT |
-                        GL_BUFFER_UPDATE_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
+                          GL_BUFFER_UPDATE_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
         std::uint32_t count = 0;
         glGetNamedBufferSubData(list.counter.id(), 0, 4, &count);
         if (count <= list.capacity) {
