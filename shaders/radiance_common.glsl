@@ -35,6 +35,14 @@ uint touchWith(uint node, int level, uint bits) {
 // Marks `node` of `level` touched; the first to do so appends it to the level's list and gets true.
 bool touch(uint node, int level) { return (touchWith(node, level, TOUCHED_LISTED) & TOUCHED_LISTED) == 0u; }
 
+#ifndef RADIANCE_WITHOUT_BORDER_LISTS
+// A node's border flag: BORDER_NOW once it is on this filtering's border list (touch_border.comp),
+// BORDER_BEFORE when it was on the previous one's (border_age.comp): only those bricks can hold
+// light, and only those that are not on the border again need clearing (radiance_clear.comp).
+const uint BORDER_NOW = 1u;
+const uint BORDER_BEFORE = 2u;
+#endif
+
 // A slab's radiance for the pools: `seen` is what reaches its front face (mean over its cross-
 // section), `alpha` its opacity (1 − mean transmittance), `tau` its density, `length` its length
 // (voxels). Stored as L·τ, L = seen / α being the radiance of a uniform medium of that opacity

@@ -20,7 +20,7 @@ void main() {
         if (any(lessThan(target, ivec3(0))) || any(greaterThanEqual(target, ivec3(size)))) continue;
         uint other = o == 13 ? node : findNode(uvec3(target), uLevel);
         if (other == NONE) continue;
-        if (atomicExchange(borderFlag[other], 1u) == 0u) {
+        if ((atomicOr(borderFlag[other], BORDER_NOW) & BORDER_NOW) == 0u) {
             uint slot = atomicAdd(listCounts[BORDER_COUNTS + uint(uLevel)], 1u);
             borderList[uLevelStart[uLevel] + slot] = other;
         }

@@ -16,7 +16,8 @@ gl::ComputeCall over(const gl::Program& program, const Octree& octree, const Rad
 }  // namespace
 
 RadianceFilter::RadianceFilter()
-    : clear_(gl::buildProgram({{GL_COMPUTE_SHADER, "radiance_clear.comp"}})),
+    : ageBorder_(gl::buildProgram({{GL_COMPUTE_SHADER, "border_age.comp"}})),
+      clear_(gl::buildProgram({{GL_COMPUTE_SHADER, "radiance_clear.comp"}})),
       clearBorder_(gl::buildProgram({{GL_COMPUTE_SHADER, "radiance_clear.comp"}}, {"CLEAR_BORDER 1"})),
       touchParents_(gl::buildProgram({{GL_COMPUTE_SHADER, "touch_parents.comp"}})),
       touchBorder_(gl::buildProgram({{GL_COMPUTE_SHADER, "touch_border.comp"}})),
@@ -26,20 +27,18 @@ RadianceFilter::RadianceFilter()
 void RadianceFilter::leaves(const Octree& octree, RadianceVolume& volume) {
     // Bricks outside the border lists are not written again: they must read as no light. Only the
     // last filtering's border nodes can hold light; every node, the first time over these geometry
-    // bricks (their density is what "no light" holds).
+    // bricks (their density is what "no light" holds, and the flags hold nothing yet).
     const bool onlyBorder =
         volume.darkOutsideBorderFor != 0 && volume.darkOutsideBorderFor == octree.geometryBricksBuild;
-    gl::ComputeCall clear = over(onlyBorder ? clearBorder_ : clear_, octree, volume, 0);
-    clear.uniform("uNodeCount", octree.nodeCount)
-        .texture(gl::TEXTURE_OPACITY_PLUS, octree.brickOpacityPlus.id())
-        .texture(gl::TEXTURE_OPACITY_MINUS, octree.brickOpacityMinus.id());
-    bindDirectionalImage(clear, volume, GL_WRITE_ONLY);
-    clear.dispatch1D(octree.nodeCount, 64, kBarrier);
-    const std::uint32_t zero = 0;
-    glClearNamedBufferData(volume.borderFlag.id(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
+    if (onlyBorder) {
+        gl::ComputeCall age = over(ageBorder_, octree, volume, 0);
+        age.uniform("uNodeCount", octree.nodeCount).dispatch1D(octree.nodeCount, 64, kBarrier);
+    } else {
+        const std::uint32_t zero = 0;
+        glClearNamedBufferData(volume.borderFlag.id(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
+    }
     clearListCounts(volume, gl::BORDER_COUNT_SLOT, gl::MISSED_COUNT_SLOT);
     gl::memoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
-    volume.darkOutsideBorderFor = octree.geometryBricksBuild;
 
     for (int level = octree.levels - 1; level >= 0; --level)
         listDispatch_.dispatch(over(touchParents_, octree, volume, level), volume,
@@ -47,6 +46,15 @@ void RadianceFilter::leaves(const Octree& octree, RadianceVolume& volume) {
     for (int level = 0; level < octree.levels; ++level)
         listDispatch_.dispatch(over(touchBorder_, octree, volume, level), volume, kTouchedCountSlot + unsigned(level),
                                kBarrier);
+    // With the border known, the bricks that will not be written again.
+    gl::ComputeCall clear = over(onlyBorder ? clearBorder_ : clear_, octree, volume, 0);
+    clear.uniform("uNodeCount", octree.nodeCount)
+        .texture(gl::TEXTURE_OPACITY_PLUS, octree.brickOpacityPlus.id())
+        .texture(gl::TEXTURE_OPACITY_MINUS, octree.brickOpacityMinus.id());
+    bindDirectionalImage(clear, volume, GL_WRITE_ONLY);
+    clear.dispatch1D(octree.nodeCount, 64, kBarrier);
+    volume.darkOutsideBorderFor = octree.geometryBricksBuild;
+
     const int leafLevel = octree.levels - 1;
     gl::ComputeCall call = over(leaves_, octree, volume, leafLevel);
     call.storage(gl::SSBO_CELL_OPACITY, octree.cellOpacity)

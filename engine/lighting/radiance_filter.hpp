@@ -1,12 +1,13 @@
 #pragma once
 // radiance_leaves and radiance_mip passes: the radiance bricks (brick_layout.hpp), only through the
 // nodes beside light.
-//   leaves: the bricks the last filtering lit (every brick, the first time over new geometry
-//           bricks) as no light over the geometry's density (shaders/radiance_clear.comp),
-//           the touched nodes of every level (parents of touched nodes, up to the root), the
+//   leaves: the touched nodes of every level (parents of touched nodes, up to the root), the
 //           border nodes of every level (the 3³ neighbourhood of touched ones: every node whose
-//           samples can be other than zero), and the leaf bricks of the border leaves from their
-//           voxels (shaders/radiance_leaves.comp).
+//           samples can be other than zero), then the bricks the last filtering lit that are not
+//           on the border now (every other brick, the first time over new geometry bricks) as no
+//           light over the geometry's density (shaders/border_age.comp, radiance_clear.comp),
+//           and the leaf bricks of the border leaves from their voxels
+//           (shaders/radiance_leaves.comp).
 //   mip:    the directional bricks of every level above the leaves, bottom-up, over the border
 //           nodes (shaders/radiance_mip.comp).
 #include "lighting/list_dispatch.hpp"
@@ -21,7 +22,7 @@ public:
     void mip(const Octree& octree, RadianceVolume& volume);
 
 private:
-    gl::Program clear_, clearBorder_, touchParents_, touchBorder_, leaves_, mip_;
+    gl::Program ageBorder_, clear_, clearBorder_, touchParents_, touchBorder_, leaves_, mip_;
     ListDispatch listDispatch_;
 };
 

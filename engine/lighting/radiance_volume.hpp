@@ -46,7 +46,8 @@ struct RadianceVolume {
     int bricksBounces = 1;
     // The geometry bricks (Octree::geometryBricksBuild) over whose density every node outside the
     // border lists holds no light (shaders/radiance_clear.comp); 0: none yet. While they are the
-    // octree's, a new filtering only has to clear the bricks of the last one's border nodes.
+    // octree's, a new filtering only has to clear the bricks of the last one's border nodes that
+    // are not on its own border.
     std::uint64_t darkOutsideBorderFor = 0;
 
     double wattsPerUnit = 0.0;  // fixed point of the photon sums (fluxWattsPerUnit, inject.hpp)

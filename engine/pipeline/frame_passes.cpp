@@ -211,7 +211,7 @@ const PassTable kFramePasses = {{
      [](FrameResources& f, const FrameView&) { injectPhotons(f); }},
     {Pass::RadianceLeaves, "radiance_leaves", Stage::Radiance,
      {I::BounceSettings}, {R::CellValues, R::GeometryBricks, R::CellRadiance}, {R::LeafRadiance}, unlessRadiance,
-     "radiance_clear.comp, touch_parents.comp, touch_border.comp, radiance_leaves.comp",
+     "border_age.comp, touch_parents.comp, touch_border.comp, radiance_clear.comp, radiance_leaves.comp",
      [](FrameResources& f, const FrameView&) { filterLeafRadiance(f); }},
     {Pass::RadianceMip, "radiance_mip", Stage::Radiance,
      {}, {R::LeafRadiance, R::GeometryBricks}, {R::RadianceBricks}, unlessRadiance,
@@ -223,7 +223,7 @@ const PassTable kFramePasses = {{
     {Pass::Bounce, "bounce", Stage::Radiance,
      {I::BounceSettings, I::ConeSettings}, {R::RadianceBricks, R::CellValues, R::CellRadiance}, {R::BouncedRadiance},
      unlessBounces,
-     "bounce_gather.comp, radiance_clear.comp, touch_parents.comp, touch_border.comp, radiance_leaves.comp, "
+     "bounce_gather.comp, border_age.comp, touch_parents.comp, touch_border.comp, radiance_clear.comp, radiance_leaves.comp, "
      "radiance_mip.comp",
      [](FrameResources& f, const FrameView&) { gatherBounces(f); }},
     {Pass::GBuffer, "gbuffer", Stage::Camera,
