@@ -1,17 +1,19 @@
 #!/usr/bin/env bash
 # Where the indirect light comes from, surface by surface: for each Sponza preset, the engine's
-# indirect light (`--aov gi`) and the path tracer's (`--indirect-out`, one bounce) with all
-# materials, then with the floor's and with the fabrics' reflection taken out (`--dark-material`,
-# the same in both). The difference, on every pixel but the material's own (whose shading the
-# option darkens too; found from `--aov albedo`), is the light off those surfaces; its ratio engine /
-# reference says which surfaces' light the engine gets wrong, and "the rest" is the light off
-# everything else.
-#   bash benchmarks/light_sources.sh          (about ten minutes on llvmpipe; needs Sponza)
+# indirect light (`--aov gi`), with the cone set and with 16 narrow cones, and the path tracer's
+# (`--indirect-out`, one bounce) with all materials, then with one material group's reflection
+# taken out (`--dark-material`, the same in all three). The difference, on every pixel but the
+# material's own (whose shading the option darkens too; found from `--aov albedo`), is the light
+# off those surfaces; its ratio engine / reference says which surfaces' light the engine gets
+# wrong, and "the rest" is the light off everything else. Light that both kinds of cones get
+# wrong alike is not the cone set's coarse quadrature.
+#   bash benchmarks/light_sources.sh          (about twenty-five minutes on llvmpipe; needs Sponza)
 # Writes benchmarks/results/light_sources_<renderer>.md.
 source "$(dirname "$0")/scratch_setup.sh"
 spp=256
 views=(CameraMain CameraAlternate CameraBalcony CameraAlcove)
-materials=(Floor 'Fabric*')
+materials=(Floor 'Fabric*' 'Column*' Arches Bricks)
+narrow=(--cone-rays 16 --cone-step 1)
 size=(--width 320 --height 180)
 for view in "${views[@]}"; do
   for index in -1 "${!materials[@]}"; do
@@ -22,6 +24,8 @@ for view in "${views[@]}"; do
       --out "$work/r.pfm" --indirect-out "$work/$view$index-reference.pfm"
     ./build/vct -q render --scene sponza --camera "$view" "${size[@]}" "${dark[@]}" --aov gi \
       --hdr-out "$work/$view$index-engine.pfm" --out "$work/e.png" --timings "$work/timings.json"
+    ./build/vct -q render --scene sponza --camera "$view" "${size[@]}" "${dark[@]}" "${narrow[@]}" --aov gi \
+      --hdr-out "$work/$view$index-narrow.pfm" --out "$work/e.png"
     ./build/vct -q render --scene sponza --camera "$view" "${size[@]}" "${dark[@]}" --aov albedo \
       --hdr-out "$work/$view$index-albedo.pfm" --out "$work/e.png"
   done
@@ -59,33 +63,40 @@ def ratios(engine, reference, significant):
 
 renderer, tag = renderer_of(f"{work}/timings.json")
 lines = report_head("Where the indirect light comes from, surface by surface", renderer, "light_sources.sh",
-                    f"Sponza's presets at 320×180, 256³, default settings; the engine's indirect light (`vct render "
-                    f"--aov gi`) and the path tracer's (`vct reference --bounces 1 --spp {spp} --indirect-out`), "
-                    "with all materials and with the named ones dark (`--dark-material`, albedo 0 in both). The "
-                    "light off a material is the difference, over the pixels that do not show the material itself "
-                    "(the option darkens those too). Columns: the share of the reference's indirect light there "
-                    "that comes off the material; engine / reference of that light, over the image and per 3×3 "
-                    "cell (row 0 at the top, cells where it is at most 5 % of its mean over the image: –); "
-                    "engine / reference of the light off every other surface.",
-                    ["view", "material", "share of the reference's", "engine / reference", "per cell",
-                     "the rest: engine / reference"])
+                    f"Sponza's presets at 320×180, 256³; the engine's indirect light (`vct render --aov gi`) with "
+                    f"the default cone set and with 16 narrow cones (`--cone-rays 16 --cone-step 1`), and the path "
+                    f"tracer's (`vct reference --bounces 1 --spp {spp} --indirect-out`), with all materials and "
+                    "with the named ones dark (`--dark-material`, albedo 0 in all three). The light off a material "
+                    "is the difference, over the pixels that do not show the material itself (the option darkens "
+                    "those too). Columns: the share of the reference's indirect light there that comes off the "
+                    "material; engine / reference of that light over the image and per 3×3 cell (row 0 at the "
+                    "top, cells where it is at most 5 % of its mean over the image: –), for each kind of cones; "
+                    "engine / reference of the light off every other surface (cone set, narrow cones).",
+                    ["view", "material", "share of the reference's", "cone set / reference", "per cell",
+                     "narrow cones / reference", "per cell", "the rest: set, narrow"])
 for view in views:
-    engine_all, engine_all_cells = cells(f"{work}/{view}-1-engine.pfm")
     reference_all, reference_all_cells = cells(f"{work}/{view}-1-reference.pfm")
-    lines.append(f"| {view} | (all) | 100 % | {engine_all / reference_all:.2f} | "
-                 f"{ratios(engine_all_cells, reference_all_cells, [r > 0.05 * reference_all / 9 for r in reference_all_cells])} | |")
+    significant = [r > 0.05 * reference_all / 9 for r in reference_all_cells]
+    row = f"| {view} | (all) | 100 % |"
+    for engine in ("engine", "narrow"):
+        engine_all, engine_all_cells = cells(f"{work}/{view}-1-{engine}.pfm")
+        row += f" {engine_all / reference_all:.2f} | {ratios(engine_all_cells, reference_all_cells, significant)} |"
+    lines.append(row + " |")
     for index, material in enumerate(materials):
         keep = not_own(view, index)
-        engine_all, engine_all_cells = cells(f"{work}/{view}-1-engine.pfm", keep)
         reference_all, reference_all_cells = cells(f"{work}/{view}-1-reference.pfm", keep)
-        engine_rest, engine_rest_cells = cells(f"{work}/{view}{index}-engine.pfm", keep)
         reference_rest, reference_rest_cells = cells(f"{work}/{view}{index}-reference.pfm", keep)
-        engine_off = [a - b for a, b in zip(engine_all_cells, engine_rest_cells)]
         reference_off = [a - b for a, b in zip(reference_all_cells, reference_rest_cells)]
         reference_share = 1.0 - reference_rest / reference_all
-        engine_ratio = (engine_all - engine_rest) / max(reference_all - reference_rest, 1e-30)
         significant = [r > 0.05 * max(reference_all - reference_rest, 1e-30) / 9 for r in reference_off]
-        lines.append(f"| {view} | `{material}` | {100 * reference_share:.0f} % | {engine_ratio:.2f} | "
-                     f"{ratios(engine_off, reference_off, significant)} | {engine_rest / reference_rest:.2f} |")
+        row, rest = f"| {view} | `{material}` | {100 * reference_share:.0f} % |", []
+        for engine in ("engine", "narrow"):
+            engine_all, engine_all_cells = cells(f"{work}/{view}-1-{engine}.pfm", keep)
+            engine_rest, engine_rest_cells = cells(f"{work}/{view}{index}-{engine}.pfm", keep)
+            engine_off = [a - b for a, b in zip(engine_all_cells, engine_rest_cells)]
+            engine_ratio = (engine_all - engine_rest) / max(reference_all - reference_rest, 1e-30)
+            row += f" {engine_ratio:.2f} | {ratios(engine_off, reference_off, significant)} |"
+            rest.append(f"{engine_rest / reference_rest:.2f}")
+        lines.append(row + f" {', '.join(rest)} |")
 write_report(f"{out}/light_sources_{tag}.md", lines)
 PY
