@@ -7,8 +7,7 @@ layout(local_size_x = 64) in;
 // radiance becomes its first-bounce radiance L₀ (photons and emission, kept in `bounceBase`)
 // plus ρ/π·E of each side; the radiance filter then runs again over it, so each call adds one
 // bounce: L_k = L₀ + ρ/π·E[L_{k−1}].
-// The lit-side direction follows the same bookkeeping as photons (facing.glsl): the sum of the
-// radiance sent to the front minus that sent to the back, over the whole, along the normal.
+// The shares of that radiance leaving towards each axis direction follow (facing.glsl).
 // Sixteen storage blocks at most (GL's least per compute shader): the gather needs no border lists.
 #define RADIANCE_WITHOUT_BORDER_LISTS
 #include "cone_march.glsl"
@@ -16,8 +15,8 @@ layout(local_size_x = 64) in;
 
 layout(std430, binding = SSBO_CELL_VALUES) buffer CellAlbedo { uint cellAlbedo[]; };   // RGBA8 albedo, opacity
 layout(std430, binding = SSBO_CELL_NORMAL) buffer CellNormal { uint cellNormal[]; };   // octahedral
-// The first bounce: (L₀·τ, τ) of every cell, then (N₀·τ, τ) of every cell; then the irradiance
-// gathered on both sides of every cell (written for first children, see below).
+// The first bounce: (L₀·τ, τ) of every cell, then its six exit shares (two vec4) of every cell;
+// then the irradiance gathered on both sides of every cell (written for first children, see below).
 layout(std430, binding = SSBO_BOUNCE_BASE) buffer BounceBase { vec4 bounceBase[]; };
 // Cells that gather their own (GATHER_LISTED reads them; its count is a list count).
 layout(std430, binding = SSBO_BOUNCE_LIST) buffer BounceList { uint ownGatherCells[]; };
@@ -33,20 +32,27 @@ layout(std430, binding = SSBO_BOUNCE_LIST) buffer BounceList { uint ownGatherCel
 const float kShareCosine = 0.9;
 
 
-// The cell's outgoing radiance from its first bounce and the irradiance E gathered on each side.
+// The cell's outgoing radiance from its first bounce and the irradiance E gathered on each side,
+// and the share of it that leaves towards each axis direction (facing.glsl): the first bounce's
+// shares and the gathered light's, which leaves the side of the voxel's normal it arrived on
+// (switching over a few degrees either side of edge-on), weighted by their radiance.
 void storeBounced(uint cell, uint cellCount, uint node, vec4 albedo, vec3 normal, vec3 irradiance[2]) {
     vec3 sent[2] = vec3[2](albedo.rgb / PI * irradiance[0], albedo.rgb / PI * irradiance[1]);
-    vec4 base = bounceBase[cell], baseDirection = bounceBase[cellCount + cell];
+    vec4 base = bounceBase[cell];
     vec3 first = base.a > 0.0 ? base.rgb / base.a : vec3(0.0);
-    vec3 firstDirection = baseDirection.a > 0.0 ? baseDirection.rgb / baseDirection.a : vec3(0.0);
     vec3 radiance = first + sent[0] + sent[1];
     float total = dot(radiance, vec3(1.0));
     if (!(total > 0.0)) return;  // unlit and dark still: nothing to add
-    vec3 direction = (firstDirection * dot(first, vec3(1.0)) +
-                      normal * (dot(sent[0], vec3(1.0)) - dot(sent[1], vec3(1.0)))) / total;
+    float firstWeight = dot(first, vec3(1.0)), frontWeight = dot(sent[0], vec3(1.0)), backWeight = dot(sent[1], vec3(1.0));
+    vec4 shares[2] = vec4[2](bounceBase[cellCount + 2u * cell], bounceBase[cellCount + 2u * cell + 1u]);
+    for (int i = 0; i < 6; ++i) {
+        float front = clamp(0.5 + 8.0 * dot(normal, -poolDirection(i)), 0.0, 1.0);
+        shares[i >> 2][i & 3] = (firstWeight * shares[i >> 2][i & 3] + frontWeight * front + backWeight * (1.0 - front)) / total;
+    }
     float tau = radianceWeight(albedo.a);
     cellRadiance[cell] = vec4(radiance * tau, tau);
-    cellDirection[cell] = vec4(direction * tau, tau);
+    cellDirection[2u * cell] = shares[0];
+    cellDirection[2u * cell + 1u] = vec4(shares[1].xy, 0.0, 0.0);
     touch(node, uLevels);
 }
 
@@ -82,8 +88,8 @@ void main() {
         return;
     }
     int flip = agreement < 0.0 ? 1 : 0;
-    irradiance[0] = bounceBase[2u * cellCount + 2u * sibling + uint(flip)].rgb;
-    irradiance[1] = bounceBase[2u * cellCount + 2u * sibling + uint(1 - flip)].rgb;
+    irradiance[0] = bounceBase[3u * cellCount + 2u * sibling + uint(flip)].rgb;
+    irradiance[1] = bounceBase[3u * cellCount + 2u * sibling + uint(1 - flip)].rgb;
 #else
     vec3 centre = vec3(unpackCell(nodeCoord[node])) + 0.5;
     for (int side = 0; side < 2; ++side) {
@@ -92,8 +98,8 @@ void main() {
     }
 #endif
 #ifdef GATHER_FIRST_CHILDREN
-    bounceBase[2u * cellCount + 2u * cell] = vec4(irradiance[0], 0.0);
-    bounceBase[2u * cellCount + 2u * cell + 1u] = vec4(irradiance[1], 0.0);
+    bounceBase[3u * cellCount + 2u * cell] = vec4(irradiance[0], 0.0);
+    bounceBase[3u * cellCount + 2u * cell + 1u] = vec4(irradiance[1], 0.0);
 #endif
     storeBounced(cell, cellCount, node, albedo, normal, irradiance);
 }

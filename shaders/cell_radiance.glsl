@@ -3,7 +3,10 @@
 #ifndef CELL_RADIANCE_GLSL
 #define CELL_RADIANCE_GLSL
 layout(std430, binding = SSBO_CELL_RADIANCE) buffer CellRadiance { vec4 cellRadiance[]; };  // premultiplied (L·τ, τ)
-// The mean lit-side normal of the voxel's reflected light (radiance_normalize), premultiplied
-// (N·τ, τ); bound at SSBO_CELL_RADIANCE in place of CellRadiance when the brick passes filter it.
+// Per cell two vec4: the share of its radiance that leaves towards each of the six axis
+// directions, seen through its opacity there (radiance_normalize.comp; read by facing.glsl).
 layout(std430, binding = SSBO_CELL_DIRECTION) buffer CellDirection { vec4 cellDirection[]; };
+// Seen along an axis, a voxel's lit parts may show more than its mean radiance (a fold lit from
+// above, seen from above); never more than this many times.
+const float MAX_EXIT_SHARE = 4.0;
 #endif

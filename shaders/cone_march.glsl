@@ -43,9 +43,7 @@ uniform float uVoxelScale;
 // Narrow cones thinner than a voxel read the voxels themselves (sampleVoxels) while they hold the
 // light the bricks hold (one bounce: the bounce pass leaves the voxels at the first).
 uniform int uReadVoxels;
-uniform int uConeHasEmissive;
 layout(std430, binding = SSBO_CELL_OPACITY) buffer ConeCellOpacity { uint coneCellOpacity[]; };  // (αx, αy, αz, α)
-layout(std430, binding = SSBO_CELL_EMISSIVE) buffer ConeCellEmissive { vec4 coneCellEmissive[]; };
 
 // The cone being traced: its axis, and E[max(±d_a, 0)] per axis over its directions
 // (cone_spread.glsl).
@@ -218,11 +216,7 @@ vec4 voxelSeen(uint voxel, int i, float share) {
     float tau = -log(1.0 - alpha);
     vec4 stored = cellRadiance[index];
     vec3 radiance = stored.a > 0.0 ? stored.rgb / stored.a : vec3(0.0);
-    float emittedShare = uConeHasEmissive != 0 ? clamp(dot(coneCellEmissive[index].rgb, vec3(1.0)) /
-                                                           max(dot(radiance, vec3(1.0)), 1e-30), 0.0, 1.0)
-                                               : 0.0;
-    float f = facingShare(cellDirection[index], emittedShare, poolDirection(i));
-    return share * vec4(radiance * f * tau, tau);
+    return share * vec4(radiance * exitShare(index, i) * tau, tau);
 }
 
 vec4 sampleVoxels(vec3 p, uint leaf) {

@@ -42,6 +42,7 @@ void addPhoton(uint node, vec3 units, ivec3 litNormal) {
     for (uint c = 0u; c < 3u; ++c) accumulate64(index + 2u * c, uint(round(units[c])));
     for (uint c = 0u; c < 3u; ++c) atomicAdd(radianceAccumulator[index + 6u + c], uint(litNormal[c]));
     atomicAdd(radianceAccumulator[index + 9u], 1u);
+    for (uint c = 0u; c < 3u; ++c) atomicAdd(radianceAccumulator[index + 10u + c], uint(abs(litNormal[c])));
     // The first photon of the node touches its partners, also when the node itself was touched
     // before as another cell's partner.
     if ((touchWith(node, uLevels, TOUCHED_BY_PHOTONS) & TOUCHED_BY_PHOTONS) == 0u) touchColumnPartners(node);

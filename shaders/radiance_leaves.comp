@@ -5,8 +5,7 @@ layout(local_size_x = 64) in;
 // what radiance_clear wrote: no light). Along ±a, a sample's slab (brick_layout.hpp, "Slabs";
 // bricks_opacity.comp) holds halves of the 4 voxels ahead of it; what a cone there sees is the
 // mean over them of the radiance that leaves each towards it times its opacity along a: the
-// voxel's radiance L times the share of it that leaves against ±a (facing.glsl: from its lit-side
-// normal N and its emitted share).
+// voxel's radiance L times the share of it that leaves against ±a (facing.glsl).
 // Stored premultiplied by the slab's density (radiance_common.glsl, slabRadiance).
 #define WORK_LIST_BORDER
 #include "voxel_common.glsl"
@@ -22,8 +21,6 @@ layout(std430, binding = SSBO_CELL_OPACITY) buffer CellOpacity { uint cellOpacit
 layout(binding = TEXTURE_OPACITY_PLUS) uniform sampler3D uOpacityPlus;
 layout(binding = TEXTURE_OPACITY_MINUS) uniform sampler3D uOpacityMinus;
 layout(rgba32f, binding = IMAGE_DIRECTIONAL_RADIANCE) uniform writeonly image3D uDirectional;
-layout(std430, binding = SSBO_CELL_EMISSIVE) buffer CellEmissive { vec4 cellEmissive[]; };
-uniform int uHasEmissive;
 
 void main() {
     bool valid;
@@ -43,13 +40,8 @@ void main() {
         opacity[v] = min(unpackUnorm4x8(cellOpacity[index]).xyz, vec3(MAX_OPACITY));
         vec4 radiance = cellRadiance[index];
         if (radiance.a <= 0.0) continue;
-        vec4 direction = cellDirection[index];
         vec3 outgoing = radiance.rgb / radiance.a;
-        float emittedShare = uHasEmissive != 0 ? clamp(dot(cellEmissive[index].rgb, vec3(1.0)) /
-                                                          max(dot(outgoing, vec3(1.0)), 1e-30), 0.0, 1.0)
-                                               : 0.0;
-        for (int i = 0; i < 6; ++i)
-            sent[v][i] = opacity[v][i >> 1] * outgoing * facingShare(direction, emittedShare, poolDirection(i));
+        for (int i = 0; i < 6; ++i) sent[v][i] = opacity[v][i >> 1] * outgoing * exitShare(index, i);
     }
     ivec3 origin = brickOrigin(node);
     for (int k = 0; k < 3; ++k)

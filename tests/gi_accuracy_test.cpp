@@ -38,6 +38,7 @@ constexpr double kFurnaceBouncesTolerance = 0.05;  // of 1.75 and 1.875 (the acc
 constexpr double kNarrowMean[2] = {0.9, 1.1}, kNarrowCells[2] = {0.75, 1.33};
 constexpr double kNarrowWallRatio[2] = {0.85, 1.15};
 constexpr double kNarrowConeCountTolerance = 0.05;
+constexpr double kSlabLikeSheetTolerance = 0.1;
 
 ImageF render(const std::filesystem::path& dir, const std::string& name, const std::string& options) {
     const auto out = dir / name;
@@ -230,6 +231,37 @@ TEST(GiAccuracy, AFloorUnderASheetSeesNoneOfTheEmitterAboveIt) {
                     levels, 100.0 * middle.mean / full, 100.0 * middle.largest / full);
         EXPECT_LE(middle.mean, kUnderSheetMean * full) << levels << " levels";
         EXPECT_LE(middle.largest, kUnderSheetLargestPixel * full) << levels << " levels";
+    }
+}
+
+TEST(GiAccuracy, AThinSlabSendsTheLightOfItsLitFaceLikeASheet) {
+    // A wall 5 mm thick (a curtain or banner modelled with both faces), far thinner than a voxel
+    // (3 cm), lit by the sun on its front face, beside a sunlit floor: the floor sees only the lit
+    // face, as it would of a wall of no thickness. Each voxel of the slab holds both faces, lit and
+    // dark, so its mean radiance is half the lit face's; a voxel must still send the light of its
+    // lit face towards the side that face looks to (radiance_normalize.comp), or the slab lights
+    // the floor half as much as the sheet (0.51 with the cone set and 0.50 with narrow cones when
+    // each voxel had one mean lit normal and sent its mean radiance).
+    const auto dir = test::testDir();
+    auto floorIndirect = [&](bool slab, const std::string& cones) {
+        test::ObjWriter obj;
+        obj.material("white", glm::vec3(0.6f));
+        obj.quad({-2.0f, 0.0f, 0.0f}, {2.0f, 0.0f, 0.0f}, {2.0f, 0.0f, 3.0f}, {-2.0f, 0.0f, 3.0f});  // floor
+        obj.quad({-2.0f, 0.0f, 0.0f}, {2.0f, 0.0f, 0.0f}, {2.0f, 3.0f, 0.0f}, {-2.0f, 3.0f, 0.0f});  // front face
+        if (slab) obj.quad({-2.0f, 0.0f, -0.005f}, {2.0f, 0.0f, -0.005f}, {2.0f, 3.0f, -0.005f}, {-2.0f, 3.0f, -0.005f});
+        const auto model = obj.write(dir, slab ? "slab" : "sheet");
+        const ImageF gi = render(dir, (slab ? "slab" : "sheet") + std::to_string(cones.size()),
+                                 "--scene " + model.string() + " --voxel-levels 7 --sun-dir 0.2,-0.6,-1 " + cones +
+                                     " --eye 0,2.2,3.4 --target 0,0.2,1.0 --fov 50 --width 64 --height 48"
+                                     " --aov gi --gi-resolution full");
+        return greyStats(gi, 0, 64, 24, 48).mean;  // the lower half: the floor in front of the wall
+    };
+    for (const std::string cones : {"", "--cone-rays 16"}) {
+        const double sheet = floorIndirect(false, cones), slab = floorIndirect(true, cones);
+        std::printf("[ slab     ] floor's indirect light beside a slab / beside a sheet (%s): %.3f\n",
+                    cones.empty() ? "cone set" : "narrow cones", slab / sheet);
+        ASSERT_GT(sheet, 0.0);
+        EXPECT_NEAR(slab / sheet, 1.0, kSlabLikeSheetTolerance) << cones;
     }
 }
 

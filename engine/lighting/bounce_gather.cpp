@@ -14,16 +14,17 @@ BounceGather::BounceGather()
 void BounceGather::run(const Octree& octree, RadianceVolume& volume, RadianceFilter& filter, int bounces,
                        const ConeSettings& cones) {
     const std::size_t cells = octree.cellCount();
-    const std::size_t half = cells * 16;  // one vec4 per cell
-    if (baseBytes_ != 4 * half) {
-        base_ = gl::createBuffer(GLsizeiptr(4 * half), nullptr, 0, "first-bounce radiance, gathered irradiance");
-        baseBytes_ = 4 * half;
+    const std::size_t vec4s = cells * 16;  // one vec4 per cell
+    // Radiance (one vec4 per cell), exit shares (two), gathered irradiance (two).
+    if (baseBytes_ != 5 * vec4s) {
+        base_ = gl::createBuffer(GLsizeiptr(5 * vec4s), nullptr, 0, "first-bounce radiance, gathered irradiance");
+        baseBytes_ = 5 * vec4s;
         listBytes_ = 4 * std::max<std::size_t>(cells, 1);
         ownGatherCells_ = gl::createBuffer(GLsizeiptr(listBytes_), nullptr, 0, "cells that gather their own bounce");
     }
     gl::memoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);
-    glCopyNamedBufferSubData(volume.cellRadiance.id(), base_.id(), 0, 0, GLsizeiptr(half));
-    glCopyNamedBufferSubData(volume.cellDirection.id(), base_.id(), 0, GLintptr(half), GLsizeiptr(half));
+    glCopyNamedBufferSubData(volume.cellRadiance.id(), base_.id(), 0, 0, GLsizeiptr(vec4s));
+    glCopyNamedBufferSubData(volume.cellDirection.id(), base_.id(), 0, GLintptr(vec4s), GLsizeiptr(2 * vec4s));
     constexpr GLbitfield kBarrier = GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT;
     // Voxels gather with the cone set even where pixels trace narrow cones (`--cone-rays`): a
     // bounce carries a fraction of the light, and narrow cones at every voxel would multiply the
@@ -51,8 +52,8 @@ void BounceGather::run(const Octree& octree, RadianceVolume& volume, RadianceFil
         filter.mip(octree, volume);
     }
     gl::memoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);
-    glCopyNamedBufferSubData(base_.id(), volume.cellRadiance.id(), 0, 0, GLsizeiptr(half));
-    glCopyNamedBufferSubData(base_.id(), volume.cellDirection.id(), GLintptr(half), 0, GLsizeiptr(half));
+    glCopyNamedBufferSubData(base_.id(), volume.cellRadiance.id(), 0, 0, GLsizeiptr(vec4s));
+    glCopyNamedBufferSubData(base_.id(), volume.cellDirection.id(), GLintptr(vec4s), 0, GLsizeiptr(2 * vec4s));
     gl::memoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);
     gl::checkErrors("gathering further bounces");
 }

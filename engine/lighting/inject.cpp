@@ -75,6 +75,7 @@ void PhotonInjection::run(const Octree& octree, RadianceVolume& volume, const Sc
     normalize.storage(gl::SSBO_CELL_VALUES, octree.cellAlbedo)
         .storage(gl::SSBO_CELL_AREA, octree.cellArea)
         .storage(gl::SSBO_CELL_COLUMNS, octree.cellColumns)
+        .storage(gl::SSBO_CELL_OPACITY, octree.cellOpacity)
         .uniform("uLevel", octree.levels)
         .uniform("uHasEmissive", octree.hasEmissive ? 1 : 0);
     if (octree.hasEmissive) normalize.storage(gl::SSBO_CELL_EMISSIVE, octree.cellEmissive);

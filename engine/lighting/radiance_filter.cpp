@@ -58,10 +58,8 @@ void RadianceFilter::leaves(const Octree& octree, RadianceVolume& volume) {
     const int leafLevel = octree.levels - 1;
     gl::ComputeCall call = over(leaves_, octree, volume, leafLevel);
     call.storage(gl::SSBO_CELL_OPACITY, octree.cellOpacity)
-        .uniform("uHasEmissive", octree.hasEmissive ? 1 : 0)
         .texture(gl::TEXTURE_OPACITY_PLUS, octree.brickOpacityPlus.id())
         .texture(gl::TEXTURE_OPACITY_MINUS, octree.brickOpacityMinus.id());
-    if (octree.hasEmissive) call.storage(gl::SSBO_CELL_EMISSIVE, octree.cellEmissive);
     bindDirectionalImage(call, volume, GL_WRITE_ONLY);
     listDispatch_.dispatch(call, volume, kBorderCountSlot + unsigned(leafLevel), kBarrier);
     gl::checkErrors("filling the leaves' radiance bricks");

@@ -13,7 +13,7 @@ void allocateRadianceVolume(const Octree& octree, RadianceVolume& v) {
     const GLbitfield dynamic = GL_DYNAMIC_STORAGE_BIT;
     v.accumulators = gl::createBuffer(GLsizeiptr(cells) * 4 * kAccumulatorWords, nullptr, dynamic, "radiance accumulators");
     v.cellRadiance = gl::createBuffer(GLsizeiptr(cells) * 16, nullptr, dynamic, "cell radiance");
-    v.cellDirection = gl::createBuffer(GLsizeiptr(cells) * 16, nullptr, dynamic, "cell radiance direction");
+    v.cellDirection = gl::createBuffer(GLsizeiptr(cells) * 32, nullptr, dynamic, "cell radiance direction");
     v.touchedFlag = gl::createBuffer(GLsizeiptr(all) * 4, nullptr, dynamic, "touched flags");
     v.touchedList = gl::createBuffer(GLsizeiptr(all) * 4, nullptr, dynamic, "touched lists");
     v.borderFlag = gl::createBuffer(GLsizeiptr(nodes) * 4, nullptr, dynamic, "border flags");
@@ -42,7 +42,7 @@ void bindDirectionalImage(gl::ComputeCall& call, const RadianceVolume& v, GLenum
 }
 
 std::size_t RadianceVolume::bytes(const Octree& octree) const {
-    return std::size_t(octree.cellCount()) * (4 * kAccumulatorWords + 16 + 16) + std::size_t(octree.totalCount) * 8 +
+    return std::size_t(octree.cellCount()) * (4 * kAccumulatorWords + 16 + 32) + std::size_t(octree.totalCount) * 8 +
            std::size_t(octree.nodeCount) * 8 + brickPoolBytes(directionalBricks * glm::ivec3(1, 1, 6), 16);
 }
 

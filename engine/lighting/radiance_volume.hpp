@@ -16,11 +16,12 @@ constexpr int kAccumulatorWords = gl::RADIANCE_ACCUMULATOR_WORDS;
 
 struct RadianceVolume {
     // Per voxel (cell): 64-bit fixed-point sums of reflected flux (R, G, B: low, high words), the
-    // sums of the photons' lit-side normals and their count (radiance_common.glsl), and the
-    // resulting premultiplied radiance (L·τ, τ) and direction the reflected light leaves in (N·τ, τ).
+    // sums of the photons' lit-side normals, their count and the sums of the normals' absolute
+    // values (radiance_accumulators.glsl), and the resulting premultiplied radiance (L·τ, τ) and
+    // the share of it that leaves towards each of the six axis directions (shaders/facing.glsl).
     gl::Buffer accumulators;  // kAccumulatorWords uints per cell
     gl::Buffer cellRadiance;  // vec4 per cell (touched ones; the rest 0: read opacity from the octree)
-    gl::Buffer cellDirection; // vec4 per cell, likewise
+    gl::Buffer cellDirection; // two vec4 per cell, likewise
 
     // Touched nodes: a flag per node (all levels and the cells) and, per level, the list of the
     // touched nodes stored at [levelStart[l], levelStart[l] + count[l]) of `touchedList`.

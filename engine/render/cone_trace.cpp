@@ -131,11 +131,9 @@ void setConeMarchUniforms(gl::ComputeCall& call, const Octree& octree, const Rad
         .uniform("uVoxelOrigin", glm::vec3(octree.grid.localMin))
         .uniform("uVoxelScale", float(1.0 / octree.grid.voxelSize))
         .uniform("uReadVoxels", radiance.bricksBounces == 1 ? 1 : 0)
-        .uniform("uConeHasEmissive", octree.hasEmissive ? 1 : 0)
         .storage(gl::SSBO_CELL_OPACITY, octree.cellOpacity)
         .storage(gl::SSBO_CELL_RADIANCE, radiance.cellRadiance)
         .storage(gl::SSBO_CELL_DIRECTION, radiance.cellDirection);
-    if (octree.hasEmissive) call.storage(gl::SSBO_CELL_EMISSIVE, octree.cellEmissive);
 }
 
 void ConeTrace::render(const GBuffer& gbuffer, const Octree& octree, const RadianceVolume& radiance,

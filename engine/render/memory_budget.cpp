@@ -50,10 +50,10 @@ std::size_t estimateVoxelBytes(const Scene& scene, int levels, bool radiance, bo
     bytes += cells * 16;  // node pool entries of the voxels themselves
     // Radiance: accumulators, cell radiance and direction, flags; per node flags and lists and the
     // six radiance pools of 27 RGBA32F samples (brick_layout.hpp, "Slabs").
-    if (radiance) bytes += cells * (40 + 16 + 16 + 8) + nodes * (8 + 8 + 6 * 27 * 16);
+    if (radiance) bytes += cells * (4 * gl::RADIANCE_ACCUMULATOR_WORDS + 16 + 32 + 8) + nodes * (8 + 8 + 6 * 27 * 16);
     // The first bounce's radiance and direction, the irradiance first children gather and the list
     // of cells that gather their own (bounce_gather).
-    if (radiance && bounces) bytes += cells * (64 + 4);
+    if (radiance && bounces) bytes += cells * (80 + 4);
     return std::size_t(bytes * 1.1);  // brick pools are rounded up to whole rows and slabs
 }
 
