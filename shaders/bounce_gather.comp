@@ -51,8 +51,7 @@ void storeBounced(uint cell, uint cellCount, uint node, vec4 albedo, vec3 normal
     }
     float tau = radianceWeight(albedo.a);
     cellRadiance[cell] = vec4(radiance * tau, tau);
-    cellDirection[2u * cell] = shares[0];
-    cellDirection[2u * cell + 1u] = vec4(shares[1].xy, 0.0, 0.0);
+    storeExitShares(cell, shares[0], shares[1].xy);
     touch(node, uLevels);
 }
 

@@ -5,7 +5,7 @@
 layout(std430, binding = SSBO_CELL_RADIANCE) buffer CellRadiance { vec4 cellRadiance[]; };  // premultiplied (L·τ, τ)
 // Per cell two vec4: the share of its radiance that leaves towards each of the six axis
 // directions, seen through its opacity there (radiance_normalize.comp; read by facing.glsl).
-layout(std430, binding = SSBO_CELL_DIRECTION) buffer CellDirection { vec4 cellDirection[]; };
+layout(std430, binding = SSBO_CELL_EXIT_SHARES) buffer CellExitShares { vec4 cellExitShares[]; };
 // Seen along an axis, a voxel's lit parts may show more than its mean radiance (a fold lit from
 // above, seen from above); never more than this many times.
 const float MAX_EXIT_SHARE = 4.0;

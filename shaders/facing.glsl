@@ -5,4 +5,10 @@
 // gather the floor it starts from, or a surface lit from the other side of a wall; and a folded or
 // curved surface sends more of it towards the side its lit parts face. Emission leaves both ways.
 // Requires cell_radiance.glsl; `cell` indexes the cell level.
-float exitShare(uint cell, int i) { return cellDirection[2u * cell + uint(i >> 2)][i & 3]; }
+float exitShare(uint cell, int i) { return cellExitShares[2u * cell + uint(i >> 2)][i & 3]; }
+
+// Stores the six shares of `cell`: towards +x −x +y −y (`xy`), +z −z (`z`), as exitShare reads them.
+void storeExitShares(uint cell, vec4 xy, vec2 z) {
+    cellExitShares[2u * cell] = xy;
+    cellExitShares[2u * cell + 1u] = vec4(z, 0.0, 0.0);
+}

@@ -5,7 +5,7 @@ layout(local_size_x = 64) in;
 // stored weighted by the voxel's optical depth τ (voxel_common.glsl): (L·τ, τ), the form the
 // brick filters and the cone tracer use. Unlit parts of the surface count as
 // dark because A is the whole surface inside the voxel, lit or not. Beside it, which share of that
-// light leaves towards each of the six axis directions (cellDirection, facing.glsl), from the
+// light leaves towards each of the six axis directions (cellExitShares, facing.glsl), from the
 // photons' lit-side normals: a surface lights only what lies in front of its lit side.
 #define WORK_LIST_TOUCHED
 #define RADIANCE_WITHOUT_BORDER_LISTS
@@ -14,6 +14,7 @@ layout(local_size_x = 64) in;
 #include "radiance_common.glsl"
 #include "radiance_accumulators.glsl"
 #include "work_list.glsl"
+#include "facing.glsl"
 
 layout(std430, binding = SSBO_CELL_VALUES) buffer CellAlbedo { uint cellAlbedo[]; };
 layout(std430, binding = SSBO_CELL_AREA) buffer CellArea { float cellArea[]; };
@@ -108,6 +109,6 @@ void main() {
     vec3 towardMinus = min(0.5 * max(meanAbs - meanNormal, 0.0) * perOpacity, vec3(MAX_EXIT_SHARE));
     vec3 towardPlus = min(0.5 * max(meanAbs + meanNormal, 0.0) * perOpacity, vec3(MAX_EXIT_SHARE));
     float emittedShare = 1.0 - reflectedShare;
-    cellDirection[2u * cell] = emittedShare + reflectedShare * vec4(towardMinus.x, towardPlus.x, towardMinus.y, towardPlus.y);
-    cellDirection[2u * cell + 1u] = vec4(emittedShare + reflectedShare * vec2(towardMinus.z, towardPlus.z), 0.0, 0.0);
+    storeExitShares(cell, emittedShare + reflectedShare * vec4(towardMinus.x, towardPlus.x, towardMinus.y, towardPlus.y),
+                    emittedShare + reflectedShare * vec2(towardMinus.z, towardPlus.z));
 }

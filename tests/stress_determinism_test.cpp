@@ -56,7 +56,7 @@ std::vector<std::pair<std::string, std::vector<std::uint8_t>>> snapshot(const Sc
     texture("opacity bricks -", o.brickOpacityMinus.id(), o.brickPoolBricks);
     buffer("photon sums", r.accumulators, std::size_t(o.cellCount()) * 4 * kAccumulatorWords);
     buffer("cell radiance", r.cellRadiance, std::size_t(o.cellCount()) * 16);
-    buffer("cell radiance direction", r.cellDirection, std::size_t(o.cellCount()) * 32);
+    buffer("cell exit shares", r.cellExitShares, std::size_t(o.cellCount()) * 32);
     texture("radiance bricks", r.directional.id(), r.directionalBricks * glm::ivec3(1, 1, 6));
     for (Aov aov : {Aov::Final, Aov::Indirect}) {
         settings.display.aov = aov;

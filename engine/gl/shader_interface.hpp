@@ -40,7 +40,7 @@
     X(SSBO_CELL_COLUMNS, 20)         /* per voxel: its triangles' column partners (svo_leaves) */  \
     X(SSBO_MATERIALS, 21)            /* {baseColor, emissive} per material */                     \
     X(SSBO_CONE_COUNTERS, 22)                                                                     \
-    X(SSBO_CELL_DIRECTION, 23)                                                                    \
+    X(SSBO_CELL_EXIT_SHARES, 23)                                                                  \
     X(SSBO_BOUNCE_BASE, 24)          /* bounce_gather: every cell's first-bounce radiance */      \
     X(SSBO_CELL_OPACITY, 25)                                                                      \
     X(SSBO_BOUNCE_LIST, 26)          /* bounce_gather: cells that gather their own bounce */      \

@@ -24,7 +24,7 @@ void BounceGather::run(const Octree& octree, RadianceVolume& volume, RadianceFil
     }
     gl::memoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);
     glCopyNamedBufferSubData(volume.cellRadiance.id(), base_.id(), 0, 0, GLsizeiptr(vec4s));
-    glCopyNamedBufferSubData(volume.cellDirection.id(), base_.id(), 0, GLintptr(vec4s), GLsizeiptr(2 * vec4s));
+    glCopyNamedBufferSubData(volume.cellExitShares.id(), base_.id(), 0, GLintptr(vec4s), GLsizeiptr(2 * vec4s));
     constexpr GLbitfield kBarrier = GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT;
     // Voxels gather with the cone set even where pixels trace narrow cones (`--cone-rays`): a
     // bounce carries a fraction of the light, and narrow cones at every voxel would multiply the
@@ -53,7 +53,7 @@ void BounceGather::run(const Octree& octree, RadianceVolume& volume, RadianceFil
     }
     gl::memoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);
     glCopyNamedBufferSubData(base_.id(), volume.cellRadiance.id(), 0, 0, GLsizeiptr(vec4s));
-    glCopyNamedBufferSubData(base_.id(), volume.cellDirection.id(), GLintptr(vec4s), 0, GLsizeiptr(2 * vec4s));
+    glCopyNamedBufferSubData(base_.id(), volume.cellExitShares.id(), GLintptr(vec4s), 0, GLsizeiptr(2 * vec4s));
     gl::memoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);
     gl::checkErrors("gathering further bounces");
 }

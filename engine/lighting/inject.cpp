@@ -32,7 +32,7 @@ void PhotonInjection::run(const Octree& octree, RadianceVolume& volume, const Sc
     // only ones the last filtering lit (RadianceFilter::leaves), then rebuilds them.
     clearListCounts(volume, 0, gl::BORDER_COUNT_SLOT);
     clearListCounts(volume, gl::MISSED_COUNT_SLOT, gl::LIST_COUNT_SLOTS);
-    for (const gl::Buffer* b : {&volume.cellRadiance, &volume.cellDirection})
+    for (const gl::Buffer* b : {&volume.cellRadiance, &volume.cellExitShares})
         glClearNamedBufferData(b->id(), GL_RGBA32F, GL_RGBA, GL_FLOAT, zeros);
     gl::memoryBarrier(GL_ALL_BARRIER_BITS);
     volume.wattsPerUnit = fluxWattsPerUnit(lights, lightViews);

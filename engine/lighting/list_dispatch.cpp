@@ -15,7 +15,7 @@ void bindRadianceVolume(const RadianceVolume& v) {
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, gl::SSBO_BORDER_LIST, v.borderList.id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, gl::SSBO_CELL_RADIANCE, v.cellRadiance.id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, gl::SSBO_INDIRECT_ARGS, v.indirectArgs.id());
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, gl::SSBO_CELL_DIRECTION, v.cellDirection.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, gl::SSBO_CELL_EXIT_SHARES, v.cellExitShares.id());
 }
 
 void ListDispatch::dispatch(const gl::ComputeCall& call, const RadianceVolume& volume, unsigned countSlot,

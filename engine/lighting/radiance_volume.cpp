@@ -13,7 +13,7 @@ void allocateRadianceVolume(const Octree& octree, RadianceVolume& v) {
     const GLbitfield dynamic = GL_DYNAMIC_STORAGE_BIT;
     v.accumulators = gl::createBuffer(GLsizeiptr(cells) * 4 * kAccumulatorWords, nullptr, dynamic, "radiance accumulators");
     v.cellRadiance = gl::createBuffer(GLsizeiptr(cells) * 16, nullptr, dynamic, "cell radiance");
-    v.cellDirection = gl::createBuffer(GLsizeiptr(cells) * 32, nullptr, dynamic, "cell radiance direction");
+    v.cellExitShares = gl::createBuffer(GLsizeiptr(cells) * 32, nullptr, dynamic, "cell exit shares");
     v.touchedFlag = gl::createBuffer(GLsizeiptr(all) * 4, nullptr, dynamic, "touched flags");
     v.touchedList = gl::createBuffer(GLsizeiptr(all) * 4, nullptr, dynamic, "touched lists");
     v.borderFlag = gl::createBuffer(GLsizeiptr(nodes) * 4, nullptr, dynamic, "border flags");

@@ -21,7 +21,7 @@ struct RadianceVolume {
     // the share of it that leaves towards each of the six axis directions (shaders/facing.glsl).
     gl::Buffer accumulators;  // kAccumulatorWords uints per cell
     gl::Buffer cellRadiance;  // vec4 per cell (touched ones; the rest 0: read opacity from the octree)
-    gl::Buffer cellDirection; // two vec4 per cell, likewise
+    gl::Buffer cellExitShares; // two vec4 per cell, likewise
 
     // Touched nodes: a flag per node (all levels and the cells) and, per level, the list of the
     // touched nodes stored at [levelStart[l], levelStart[l] + count[l]) of `touchedList`.

@@ -133,7 +133,7 @@ void setConeMarchUniforms(gl::ComputeCall& call, const Octree& octree, const Rad
         .uniform("uReadVoxels", radiance.bricksBounces == 1 ? 1 : 0)
         .storage(gl::SSBO_CELL_OPACITY, octree.cellOpacity)
         .storage(gl::SSBO_CELL_RADIANCE, radiance.cellRadiance)
-        .storage(gl::SSBO_CELL_DIRECTION, radiance.cellDirection);
+        .storage(gl::SSBO_CELL_EXIT_SHARES, radiance.cellExitShares);
 }
 
 void ConeTrace::render(const GBuffer& gbuffer, const Octree& octree, const RadianceVolume& radiance,
