@@ -62,11 +62,13 @@ bool readsAcrossEmptyNodes() { return uRayCount > 0; }
 // Shares of a narrow cone's travel below this are the far tails of its spread: not read there.
 const float NEGLIGIBLE_SHARE = 1e-3;
 
-// Directions at more than 60° from the cone's axis are read one level finer (sampleLevel). Of the
-// thresholds measured on Cornell and the four Sponza views together (30°, 45°, 60°, 73°), 60°
-// brought the regions of each image closest to the path tracer at nearly the same RMSE; 30°
-// brings the image means closer still but raises the RMSE (more of the cone read finer).
-const float LATERAL_ALIGNMENT = 0.5;
+// Directions at more than about 41° from the cone's axis (cosine below this) are read one level
+// finer (sampleLevel). A ring cone of the 5-cone set leans 51° from the surface normal, so the
+// read along that normal falls on this side: read at the cone's own level it reached past the
+// footprint into the lit floor below a gallery's vaults (docs/benchmark.md, "Reads across the cone
+// from 41°"). Below about 39° a ring cone's main direction would be read finer too, and
+// CameraBalcony's dim galleries then received several times the path tracer's light.
+const float LATERAL_ALIGNMENT = 0.75;
 
 // Where p lies in the brick of node `node` (level `level`), in sample spacings (0..2 per axis).
 vec3 brickPosition(uint node, int level, vec3 p) {
@@ -125,7 +127,7 @@ uint slabAheadOfEmpty(int level, vec3 p, uvec3 cell, uint known, int knownLevel,
 // A slab read ahead reaches up to two of its level's spacings from p, about the footprint's
 // diameter: along the axis that is where the cone goes next, but sideways it lies outside the
 // cone (a horizontal cone high in a gallery would see the sunlit courtyard floor below it).
-// Directions more than 60° from the axis are therefore read from `finer`, the node one level
+// Directions more than 41° from the axis are therefore read from `finer`, the node one level
 // finer at p, whose slabs stay within the footprint. Where the finer node is empty, its read is
 // taken from `node`'s coarser slabs, starting where the finer read would: half a spacing ahead
 // (reading them a whole spacing ahead reached past the footprint and made the choice between
@@ -183,7 +185,7 @@ int coarseLevelFor(float lod) {
 
 // Whether every read of a sample at p whose coarser level is coarseLevel stays inside the empty
 // node [lo, lo + size]³: then it sees nothing and can be skipped. The reads ahead go half that
-// level's node edge along the axes within 60° of the cone's axis (sampleLevel), and with
+// level's node edge along the axes within 41° of the cone's axis (sampleLevel), and with
 // readsAcrossEmptyNodes along every direction the cone travels at all.
 bool readsStayInside(vec3 p, int coarseLevel, vec3 lo, float size) {
     float reach = 0.5 * float(1 << (uLevels - coarseLevel));

@@ -28,8 +28,8 @@ namespace {
 constexpr double kLeakMean = 0.005, kLeakLargestPixel = 0.02;  // of the lit floor's radiance
 constexpr double kSheetLargestPixel = 0.05;  // the pixels within a voxel of the sheet (frame.md, Known limits)
 constexpr double kUnderSheetMean = 0.015, kUnderSheetLargestPixel = 0.02;  // of π·Le
-constexpr double kCornellMean[2] = {0.85, 1.1}, kCornellCells[2] = {0.4, 1.35};
-constexpr double kSponzaMean[2] = {0.85, 1.1}, kSponzaCells[2] = {0.7, 1.3};
+constexpr double kCornellMean[2] = {0.85, 1.1}, kCornellCells[2] = {0.4, 1.4};
+constexpr double kSponzaMean[2] = {0.85, 1.1}, kSponzaCells[2] = {0.75, 1.4};
 constexpr double kFurnaceMeanTolerance = 0.05, kFurnaceLowTolerance = 0.1;  // of 1.5
 constexpr double kFurnaceBouncesTolerance = 0.05;  // of 1.75 and 1.875 (the acceptance bound)
 // Narrow cones (`--cone-rays`): issue 12's bounds on the mean and on the cells, Sponza's too: its
