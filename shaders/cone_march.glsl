@@ -68,7 +68,11 @@ const float NEGLIGIBLE_SHARE = 1e-3;
 // footprint into the lit floor below a gallery's vaults (docs/benchmark.md, "Reads across the cone
 // from 41°"). Below about 39° a ring cone's main direction would be read finer too, and
 // CameraBalcony's dim galleries then received several times the path tracer's light.
+// Narrow cones barely spread: what they read "across" are the smaller components of their own
+// direction, and they keep the threshold of 60° they were measured best with.
 const float LATERAL_ALIGNMENT = 0.75;
+const float NARROW_LATERAL_ALIGNMENT = 0.5;
+float lateralAlignment() { return uRayCount > 0 ? NARROW_LATERAL_ALIGNMENT : LATERAL_ALIGNMENT; }
 
 // Where p lies in the brick of node `node` (level `level`), in sample spacings (0..2 per axis).
 vec3 brickPosition(uint node, int level, vec3 p) {
@@ -144,7 +148,7 @@ vec4 sampleLevel(uint node, int level, uint finer, vec3 p, uvec3 cell, uint know
     for (int i = 0; i < 6; ++i) {
         int a = i >> 1;
         bool along = (i & 1) == 0;
-        bool lateral = (along ? coneAxis[a] : -coneAxis[a]) < LATERAL_ALIGNMENT;
+        bool lateral = (along ? coneAxis[a] : -coneAxis[a]) < lateralAlignment();
         vec3 at;
         uint holder = NONE;
         float weight = along ? coneAlongPlus[a] : coneAlongMinus[a];
@@ -197,7 +201,7 @@ bool readsStayInside(vec3 p, int coarseLevel, vec3 lo, float size) {
             continue;
         }
         float ahead = p[a] + (coneAxis[a] > 0.0 ? reach : -reach);
-        if (abs(coneAxis[a]) >= LATERAL_ALIGNMENT && (ahead < lo[a] || ahead >= lo[a] + size)) inside = false;
+        if (abs(coneAxis[a]) >= lateralAlignment() && (ahead < lo[a] || ahead >= lo[a] + size)) inside = false;
     }
     return inside;
 }
