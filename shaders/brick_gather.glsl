@@ -7,24 +7,37 @@
 // bit-identical in every brick that holds it.
 // Requires voxel_common.glsl and octree.glsl.
 
-// The children around `node` (level uLevel): index (s.x+1) + 4(s.y+1) + 16(s.z+1) for child
-// slot s ∈ {−1,0,1,2}³ relative to the node's own children; NONE where there is none.
-void gatherChildren(uint node, out uint children[64]) {
+// The 3×3×3 nodes around `node` (level uLevel), itself in the middle: index (e.x+1) + 3(e.y+1) +
+// 9(e.z+1) for the offset e ∈ {−1,0,1}³; NONE where there is none.
+void nodesAround(uint node, out uint around[27]) {
     ivec3 coord = ivec3(unpackCell(nodeCoord[node]));
     int size = 1 << uLevel;
     for (int o = 0; o < 27; ++o) {
-        ivec3 offset = ivec3(o % 3, (o / 3) % 3, o / 9) - 1;
-        ivec3 target = coord + offset;
-        uint around = NONE;
-        if (offset == ivec3(0)) around = node;
+        ivec3 target = coord + ivec3(o % 3, (o / 3) % 3, o / 9) - 1;
+        around[o] = NONE;
+        if (o == 13) around[o] = node;
         else if (all(greaterThanEqual(target, ivec3(0))) && all(lessThan(target, ivec3(size))))
-            around = findNode(uvec3(target), uLevel);
+            around[o] = findNode(uvec3(target), uLevel);
+    }
+}
+
+// The children around the node in the middle of `around`: index (s.x+1) + 4(s.y+1) + 16(s.z+1)
+// for child slot s ∈ {−1,0,1,2}³ relative to the node's own children; NONE where there is none.
+void childrenAround(const uint around[27], out uint children[64]) {
+    for (int o = 0; o < 27; ++o) {
+        ivec3 offset = ivec3(o % 3, (o / 3) % 3, o / 9) - 1;
         for (uint slot = 0u; slot < 8u; ++slot) {
             ivec3 s = 2 * offset + ivec3(slot & 1u, (slot >> 1) & 1u, (slot >> 2) & 1u);
             if (any(lessThan(s, ivec3(-1))) || any(greaterThan(s, ivec3(2)))) continue;
-            children[(s.x + 1) + 4 * (s.y + 1) + 16 * (s.z + 1)] = around == NONE ? NONE : childOf(around, slot);
+            children[(s.x + 1) + 4 * (s.y + 1) + 16 * (s.z + 1)] = around[o] == NONE ? NONE : childOf(around[o], slot);
         }
     }
+}
+
+void gatherChildren(uint node, out uint children[64]) {
+    uint around[27];
+    nodesAround(node, around);
+    childrenAround(around, children);
 }
 
 // At the leaf level (children = voxels): the index in gatherChildren's block of one of the 4

@@ -5,7 +5,8 @@ layout(local_size_x = 64) in;
 // a sample's slab is two child slabs long (at 2Q, then 2Q + 1 along a), composited front to back:
 // what the first sends plus what the second sends through the first; across the slab the child
 // slabs around 2Q are averaged ¼ ½ ¼ per axis. Radiance seen from the dark side of a wall is then
-// what lies on that side, and light behind a pillar is hidden only behind it.
+// what lies on that side, and light behind a pillar is hidden only behind it. Only the samples the
+// node owns (shared_samples.glsl); radiance_share.comp copies the others.
 #define WORK_LIST_BORDER
 #include "voxel_common.glsl"
 #include "octree.glsl"
@@ -14,6 +15,7 @@ layout(local_size_x = 64) in;
 #include "radiance_common.glsl"
 #include "work_list.glsl"
 #include "brick_gather.glsl"
+#include "shared_samples.glsl"
 
 layout(binding = TEXTURE_OPACITY_PLUS) uniform sampler3D uOpacityPlus;    // (τ+x, τ+y, τ+z, ·)
 layout(binding = TEXTURE_OPACITY_MINUS) uniform sampler3D uOpacityMinus;  // (τ−x, τ−y, τ−z, ·)
@@ -23,8 +25,11 @@ void main() {
     bool valid;
     uint node = workNode(valid);
     if (!valid) return;
+    uint around[27];
+    nodesAround(node, around);
     uint children[64];
-    gatherChildren(node, children);
+    childrenAround(around, children);
+    uint present = bordersAround(around);
     float hChild = float(1 << (uLevels - uLevel - 2));  // the child level's sample spacing, voxels
     ivec3 origin = brickOrigin(node);
     const float w[3] = float[3](0.25, 0.5, 0.25);
@@ -32,6 +37,7 @@ void main() {
         for (int j = 0; j < 3; ++j)
             for (int x = 0; x < 3; ++x) {
                 ivec3 q = ivec3(x, j, k);
+                if (sampleOwner(q, present) != ivec3(0)) continue;  // radiance_share.comp copies it
                 // Where the 27 child samples around 2Q lie in the pool's +x bricks (the other
                 // directions' lie a fixed offset along z), index (d + 1) · (1, 3, 9); w = 0 where no
                 // child holds one. Only their places are kept (not the six directions' values,

@@ -22,7 +22,8 @@ RadianceFilter::RadianceFilter()
       touchParents_(gl::buildProgram({{GL_COMPUTE_SHADER, "touch_parents.comp"}})),
       touchBorder_(gl::buildProgram({{GL_COMPUTE_SHADER, "touch_border.comp"}})),
       leaves_(gl::buildProgram({{GL_COMPUTE_SHADER, "radiance_leaves.comp"}})),
-      mip_(gl::buildProgram({{GL_COMPUTE_SHADER, "radiance_mip.comp"}})) {}
+      mip_(gl::buildProgram({{GL_COMPUTE_SHADER, "radiance_mip.comp"}})),
+      share_(gl::buildProgram({{GL_COMPUTE_SHADER, "radiance_share.comp"}})) {}
 
 void RadianceFilter::leaves(const Octree& octree, RadianceVolume& volume) {
     // Bricks outside the border lists are not written again: they must read as no light. Only the
@@ -72,8 +73,15 @@ void RadianceFilter::mip(const Octree& octree, RadianceVolume& volume) {
             .texture(gl::TEXTURE_OPACITY_MINUS, octree.brickOpacityMinus.id());
         bindDirectionalImage(call, volume, GL_READ_WRITE);
         listDispatch_.dispatch(call, volume, kBorderCountSlot + unsigned(level), kBarrier);
+        shareSamples(octree, volume, level);
     }
     gl::checkErrors("filtering radiance up the octree by direction");
+}
+
+void RadianceFilter::shareSamples(const Octree& octree, RadianceVolume& volume, int level) {
+    gl::ComputeCall call = over(share_, octree, volume, level);
+    bindDirectionalImage(call, volume, GL_READ_WRITE);
+    listDispatch_.dispatch(call, volume, kBorderCountSlot + unsigned(level), kBarrier);
 }
 
 }  // namespace vct

@@ -9,7 +9,8 @@
 //           and the leaf bricks of the border leaves from their voxels
 //           (shaders/radiance_leaves.comp).
 //   mip:    the directional bricks of every level above the leaves, bottom-up, over the border
-//           nodes (shaders/radiance_mip.comp).
+//           nodes (shaders/radiance_mip.comp): each node computes the samples it owns, then
+//           the others are copied from their owners (shaders/radiance_share.comp).
 #include "lighting/list_dispatch.hpp"
 #include "lighting/radiance_volume.hpp"
 
@@ -22,7 +23,11 @@ public:
     void mip(const Octree& octree, RadianceVolume& volume);
 
 private:
-    gl::Program ageBorder_, clear_, clearBorder_, touchParents_, touchBorder_, leaves_, mip_;
+    // The samples the level's border nodes share with an owner that computed them
+    // (shaders/shared_samples.glsl), copied from it (shaders/radiance_share.comp).
+    void shareSamples(const Octree& octree, RadianceVolume& volume, int level);
+
+    gl::Program ageBorder_, clear_, clearBorder_, touchParents_, touchBorder_, leaves_, mip_, share_;
     ListDispatch listDispatch_;
 };
 

@@ -1,0 +1,35 @@
+#version 450
+layout(local_size_x = 64) in;
+// radiance_mip, last step of a level: the brick samples a border node shares with another that owns
+// them (shared_samples.glsl) are copied from the owner's bricks, all six directions; the filter
+// itself wrote only the samples each node owns.
+#define WORK_LIST_BORDER
+#include "voxel_common.glsl"
+#include "octree.glsl"
+#include "bricks_common.glsl"
+#include "directional_pool.glsl"
+#include "radiance_common.glsl"
+#include "work_list.glsl"
+#include "brick_gather.glsl"
+#include "shared_samples.glsl"
+
+layout(rgba32f, binding = IMAGE_DIRECTIONAL_RADIANCE) uniform coherent image3D uDirectional;
+
+void main() {
+    bool valid;
+    uint node = workNode(valid);
+    if (!valid) return;
+    uint around[27];
+    nodesAround(node, around);
+    uint present = bordersAround(around);
+    ivec3 origin = directionalBrickOrigin(node, 0);
+    for (int s = 0; s < 27; ++s) {
+        ivec3 q = ivec3(s % 3, (s / 3) % 3, s / 9);
+        ivec3 owner = sampleOwner(q, present);
+        if (owner == ivec3(0)) continue;
+        uint from = around[(owner.x + 1) + 3 * (owner.y + 1) + 9 * (owner.z + 1)];
+        ivec3 source = directionalBrickOrigin(from, 0) + q - 2 * owner;
+        for (int i = 0; i < 6; ++i)
+            imageStore(uDirectional, origin + q + directionOffset(i), imageLoad(uDirectional, source + directionOffset(i)));
+    }
+}

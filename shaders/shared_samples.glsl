@@ -1,0 +1,33 @@
+// Brick samples that several nodes share. A node's 3³ samples lie on its corners, edges, faces and
+// centre, so only the centre is its alone: a face sample belongs to two bricks, an edge sample to
+// four, a corner to eight, and every brick holds its own copy (trilinear lookups stay inside one
+// brick). The filters compute a shared sample the same way from any brick that holds it
+// (brick_gather.glsl), so one brick can compute it and the others copy it: radiance_mip computes
+// only the samples its node owns, then radiance_share.comp copies the rest from their owners. On a
+// surface that continues on every side a node owns 8 of its 27. Copying pays where a sample costs
+// many reads (radiance_mip reads 18 child samples per direction); at the leaves a sample costs
+// about what its copy does, so radiance_leaves computes all of its own.
+//
+// The sharers of sample q of a node: along each axis where q lies on the node's low face (q_a = 0)
+// the node and its neighbour below, on its high face (q_a = 2) the node and its neighbour above,
+// inside (q_a = 1) the node alone. Its owner is the sharer on this filtering's border that comes
+// last in (z, y, x) order: every sharer finds the same one, and the node itself always counts.
+// Requires radiance_common.glsl (the border flags) and brick_gather.glsl (nodesAround).
+
+// Bit o of the result: node o of `around` is on this filtering's border list.
+uint bordersAround(const uint around[27]) {
+    uint present = 0u;
+    for (int o = 0; o < 27; ++o)
+        if (around[o] != NONE && (borderFlag[around[o]] & BORDER_NOW) != 0u) present |= 1u << uint(o);
+    return present;
+}
+
+// The offset (−1, 0 or 1 per axis) of the node that owns sample q, among those `present`.
+ivec3 sampleOwner(ivec3 q, uint present) {
+    ivec3 high = ivec3(equal(q, ivec3(2))), low = -ivec3(equal(q, ivec3(0)));
+    for (int z = high.z; z >= low.z; --z)
+        for (int y = high.y; y >= low.y; --y)
+            for (int x = high.x; x >= low.x; --x)
+                if ((present & (1u << uint((x + 1) + 3 * (y + 1) + 9 * (z + 1)))) != 0u) return ivec3(x, y, z);
+    return ivec3(0);  // not reached: the node itself is on the border
+}
