@@ -10,11 +10,13 @@ layout(local_size_x = 64) in;
 //   Variant LEAF (h = 1 voxel): the slab along ±a holds halves of the 4 voxels ahead of q; a
 //   voxel's opacity along a is its surface's area projected along a (cellOpacity).
 //   Otherwise: the slab is two child slabs long (at 2Q and 2Q ± 1 along a) and, across, the child
-//   slabs around 2Q weighted ¼ ½ ¼ per axis.
+//   slabs around 2Q weighted ¼ ½ ¼ per axis; only the samples the node owns (shared_samples.glsl),
+//   bricks_share.comp copies the others.
 #include "voxel_common.glsl"
 #include "octree.glsl"
 #include "bricks_common.glsl"
 #include "brick_gather.glsl"
+#include "shared_samples.glsl"
 
 layout(std430, binding = SSBO_CELL_OPACITY) buffer CellOpacity { uint cellOpacity[]; };  // RGBA8 (αx, αy, αz, α)
 layout(rgba16f, binding = IMAGE_OPACITY_PLUS) uniform coherent image3D uOpacityPlus;
@@ -34,8 +36,11 @@ void main() {
     uint i = linearInvocation();
     if (i >= uLevelCount[uLevel]) return;
     uint node = uLevelStart[uLevel] + i;
+    uint around[27];
+    nodesAround(node, around);
     uint children[64];
-    gatherChildren(node, children);
+    childrenAround(around, children);
+    uint present = nodesPresent(around);
     ivec3 origin = brickOrigin(node);
     for (int k = 0; k < 3; ++k)
         for (int j = 0; j < 3; ++j)
@@ -53,6 +58,7 @@ void main() {
                 }
                 storeOpacity(origin + q, transmittance[0], transmittance[1], 1.0);
 #else
+                if (sampleOwner(q, present) != ivec3(0)) continue;  // bricks_share.comp copies it
                 float hChild = float(1 << (uLevels - uLevel - 2));  // the child level's sample spacing, voxels
                 const float w[3] = float[3](0.25, 0.5, 0.25);
                 // The child slabs' transmittance at the 27 child samples around 2Q, index (d + 1) · (1, 3, 9).

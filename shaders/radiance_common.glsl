@@ -41,6 +41,15 @@ bool touch(uint node, int level) { return (touchWith(node, level, TOUCHED_LISTED
 // light, and only those that are not on the border again need clearing (radiance_clear.comp).
 const uint BORDER_NOW = 1u;
 const uint BORDER_BEFORE = 2u;
+
+// Bit o of the result: node o of a 3×3×3 neighbourhood (brick_gather.glsl, nodesAround) is on this
+// filtering's border list: the nodes whose shared samples it computes (shared_samples.glsl).
+uint bordersAround(const uint around[27]) {
+    uint present = 0u;
+    for (int o = 0; o < 27; ++o)
+        if (around[o] != NONE && (borderFlag[around[o]] & BORDER_NOW) != 0u) present |= 1u << uint(o);
+    return present;
+}
 #endif
 
 // A slab's radiance for the pools: `seen` is what reaches its front face (mean over its cross-

@@ -2,23 +2,24 @@
 // centre, so only the centre is its alone: a face sample belongs to two bricks, an edge sample to
 // four, a corner to eight, and every brick holds its own copy (trilinear lookups stay inside one
 // brick). The filters compute a shared sample the same way from any brick that holds it
-// (brick_gather.glsl), so one brick can compute it and the others copy it: radiance_mip computes
-// only the samples its node owns, then radiance_share.comp copies the rest from their owners. On a
-// surface that continues on every side a node owns 8 of its 27. Copying pays where a sample costs
-// many reads (radiance_mip reads 18 child samples per direction); at the leaves a sample costs
-// about what its copy does, so radiance_leaves computes all of its own.
+// (brick_gather.glsl), so one brick can compute it and the others copy it: above the leaves,
+// radiance_mip and bricks_opacity compute only the samples their node owns, then
+// radiance_share.comp and bricks_share.comp copy the rest from their owners. On a surface that
+// continues on every side a node owns 8 of its 27. Copying pays where a sample costs many reads
+// (18 or 27 child samples there); at the leaves a sample costs about what its copy does, so the
+// leaf filters compute all of their own.
 //
 // The sharers of sample q of a node: along each axis where q lies on the node's low face (q_a = 0)
 // the node and its neighbour below, on its high face (q_a = 2) the node and its neighbour above,
-// inside (q_a = 1) the node alone. Its owner is the sharer on this filtering's border that comes
-// last in (z, y, x) order: every sharer finds the same one, and the node itself always counts.
-// Requires radiance_common.glsl (the border flags) and brick_gather.glsl (nodesAround).
+// inside (q_a = 1) the node alone. Its owner is the sharer that comes last in (z, y, x) order
+// among those the filter works on (`present`: every node of the level, or the radiance filter's
+// border nodes): every sharer finds the same one, and the node itself always counts.
 
-// Bit o of the result: node o of `around` is on this filtering's border list.
-uint bordersAround(const uint around[27]) {
+// Bit o of the result: node o of `around` exists (bricks_opacity works on every node of a level).
+uint nodesPresent(const uint around[27]) {
     uint present = 0u;
     for (int o = 0; o < 27; ++o)
-        if (around[o] != NONE && (borderFlag[around[o]] & BORDER_NOW) != 0u) present |= 1u << uint(o);
+        if (around[o] != NONE) present |= 1u << uint(o);
     return present;
 }
 

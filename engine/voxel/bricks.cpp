@@ -16,12 +16,12 @@ PartialBricks Bricks::run(Octree& octree) {
         .image(gl::IMAGE_PARTIAL_BRICKS, albedo.texture.id(), GL_WRITE_ONLY, GL_RGBA32F)
         .dispatch1D(octree.levelCount[leafLevel], 64, GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);
     completion_.run(octree, albedo, octree.brickAlbedo.id());
-    filterOpacity(opacityLeaf_, octree, leafLevel);
+    runOpacityPass(opacityLeaf_, octree, leafLevel);
     gl::checkErrors("filling the leaf bricks");
     return albedo;
 }
 
-void filterOpacity(const gl::Program& program, const Octree& octree, int level) {
+void runOpacityPass(const gl::Program& program, const Octree& octree, int level) {
     brickLevelCall(program, octree, level)
         .storage(gl::SSBO_CELL_OPACITY, octree.cellOpacity)
         .image(gl::IMAGE_OPACITY_PLUS, octree.brickOpacityPlus.id(), GL_READ_WRITE, GL_RGBA16F, true)

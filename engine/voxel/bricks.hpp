@@ -18,8 +18,10 @@ private:
     BrickCompletion completion_;
 };
 
-// Opacity bricks of one level by transmittance (shaders/bricks_opacity.comp): the leaf level
-// from the cells, a level above from the complete samples of the level below.
-void filterOpacity(const gl::Program& program, const Octree& octree, int level);
+// Runs an opacity pass over every node of one level, with the cells and both opacity pools bound:
+// bricks_opacity.comp (opacity by transmittance: the leaf level from the cells, a level above
+// from the complete samples of the level below) or bricks_share.comp (the samples a node shares,
+// copied from the node that computed them).
+void runOpacityPass(const gl::Program& program, const Octree& octree, int level);
 
 }  // namespace vct

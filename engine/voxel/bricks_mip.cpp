@@ -6,7 +6,8 @@ namespace vct {
 
 BricksMip::BricksMip()
     : albedo_(gl::buildProgram({{GL_COMPUTE_SHADER, "bricks_mip.comp"}})),
-      opacity_(gl::buildProgram({{GL_COMPUTE_SHADER, "bricks_opacity.comp"}})) {}
+      opacity_(gl::buildProgram({{GL_COMPUTE_SHADER, "bricks_opacity.comp"}})),
+      share_(gl::buildProgram({{GL_COMPUTE_SHADER, "bricks_share.comp"}})) {}
 
 void BricksMip::run(const Octree& octree, PartialBricks leafAlbedo) {
     // Only two levels of partial bricks are alive at a time: the level and its children.
@@ -20,7 +21,8 @@ void BricksMip::run(const Octree& octree, PartialBricks leafAlbedo) {
             .dispatch1D(octree.levelCount[level], 64, GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);
         completion_.run(octree, partial, octree.brickAlbedo.id());
         child = std::move(partial);
-        filterOpacity(opacity_, octree, level);
+        runOpacityPass(opacity_, octree, level);
+        runOpacityPass(share_, octree, level);
     }
     gl::checkErrors("filtering bricks up the octree");
 }
