@@ -16,7 +16,7 @@ layout(location = 3) out vec4 outEmissive;  // emitted radiance, 0
 layout(location = 4) out vec4 outGeometricNormal;  // the triangle's unit normal facing the camera, 0
 
 void main() {
-    vec4 base = materialBaseColor(vUv, vColor);
+    vec4 base = materialBaseColorOverPixel(vUv, vColor);
     outAlbedo = vec4(base.rgb, 1.0);
     vec3 geometric = facingGeometricNormal(vPosition, uEye - vPosition);
     outNormal = vec4(facingNormal(vNormal, geometric), 0.0);

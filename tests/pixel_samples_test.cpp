@@ -134,6 +134,8 @@ TEST(PixelSamples, SixteenSamplesOfAGrazingTiledFloorConvergeToItsArea) {
     }
     std::printf("[ samples  ] grazing tiled floor, albedo against the reference: RMSE %.4f with 1 sample, %.4f with 16\n",
                 error[0], error[1]);
-    EXPECT_LT(error[1], 0.6 * error[0]);
+    // One sample filters over its pixel's footprint (0.037 here); sixteen that each did stay nearly
+    // as blurred (0.034), where sixteen filtering less come to about two thirds of the one.
+    EXPECT_LT(error[1], 0.75 * error[0]);
     EXPECT_LT(error[1], 0.03);
 }

@@ -47,8 +47,9 @@ void GBuffer::render(const GpuScene& scene, const ViewTransform& camera, float t
     gl::setUniform(program_.id(), "uViewProjection", camera.viewProjection);
     gl::setUniform(program_.id(), "uEye", camera.eye);
     gl::setUniform(program_.id(), "uTextureLodBias", textureLodBias);
-    scene.draw(program_.id(), GpuScene::Materials::All,
-               textureLodBias < 0.0f ? GpuScene::Filtering::Isotropic : GpuScene::Filtering::Anisotropic);
+    // Isotropic samplers: the first sample filters over the pixel's footprint itself
+    // (shaders/material.glsl, footprintTexel), the later ones filter less.
+    scene.draw(program_.id(), GpuScene::Materials::All, GpuScene::Filtering::Isotropic);
     gl::endRasterPass();
 }
 

@@ -26,7 +26,8 @@ public:
     enum class Materials { All, Opaque, Masked };
 
     // How the base-colour textures are filtered: mipmapped and anisotropic (the textures' own
-    // settings), or mipmapped only (render/pixel_samples.hpp says when).
+    // settings: voxelization and the light-view maps), or mipmapped only (the G-buffer, whose
+    // shader filters over each pixel's footprint itself: shaders/material.glsl).
     enum class Filtering { Anisotropic, Isotropic };
 
     // Draws the triangles of `which` materials with `program` bound; sets its material uniforms

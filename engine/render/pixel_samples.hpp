@@ -27,15 +27,16 @@ inline glm::dvec2 pixelSampleOffset(int sample) {
 }
 
 // How sample k looks up the scene's textures. The first, alone in a plain frame, filters them over
-// its pixel: mipmapped and anisotropic. A filter one pixel wide, though, averaged over N lookups
-// at jittered points blurs textures over about two pixels, while the pixel's own area (what the
-// reference integrates, with level-0 lookups) is one. The later samples therefore filter less and
+// its pixel's footprint (shaders/material.glsl, footprintTexel). A filter one pixel wide, though,
+// averaged over N lookups at jittered points blurs textures over about two pixels, while the
+// pixel's own area (what the reference integrates, with level-0 lookups) is one. The later samples therefore filter less and
 // leave the integration over the pixel to the jitter: a footprint of 1/√(k+1) of the pixel's
 // shorter axis (a mip-level bias of −½·log2(k + 1), down to −3, which keeps the aliasing of
 // single samples bounded; shaders/material.glsl measures it from the shorter axis), isotropic,
 // because an anisotropic filter spreads its probes along the pixel's whole footprint whatever the
 // bias (with it, Sponza's floor converged to a texture blurred along the view:
-// docs/benchmark.md). Returns sample k's bias; < 0 tells the G-buffer to look up isotropically.
+// docs/benchmark.md). Returns sample k's bias; < 0 tells the G-buffer to take one lookup at that
+// bias instead of the footprint filter.
 inline float textureLodBias(int sample) {
     return sample <= 0 ? 0.0f : std::max(-3.0f, -0.5f * std::log2(float(sample + 1)));
 }
