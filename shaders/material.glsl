@@ -38,7 +38,10 @@ vec4 footprintTexel(vec2 uv) {
     float lengthX = length(alongX * size), lengthY = length(alongY * size);
     vec2 major = lengthX >= lengthY ? alongX : alongY;
     float majorLength = max(lengthX, lengthY), minorLength = min(lengthX, lengthY);
-    int probes = int(clamp(ceil(majorLength / max(minorLength, 1e-6)), 1.0, float(FOOTPRINT_PROBES)));
+    // Written so that a non-finite ratio (UVs so large that their derivatives overflow) takes the
+    // most lookups instead of an undefined count.
+    float ratio = majorLength / max(minorLength, 1e-6);
+    int probes = ratio < float(FOOTPRINT_PROBES) ? int(max(ceil(ratio), 1.0)) : FOOTPRINT_PROBES;
     float lod = log2(max(majorLength / float(probes), 1e-6));
     vec4 sum = vec4(0.0);
     for (int k = 0; k < probes; ++k)

@@ -139,3 +139,30 @@ TEST(PixelSamples, SixteenSamplesOfAGrazingTiledFloorConvergeToItsArea) {
     EXPECT_LT(error[1], 0.75 * error[0]);
     EXPECT_LT(error[1], 0.03);
 }
+
+TEST(PixelSamples, TextureCoordinatesNearFloatsLimitGiveAFiniteImage) {
+    // UVs near float's largest value, finite in the file: multiplied by the texture's size in a
+    // sampler they overflow, and llvmpipe returned NaN texels (7350 non-finite values in this
+    // image). The loader treats coordinates beyond ±2^24, where no texel can be told apart, like
+    // non-finite ones (set to 0, with a warning); every pixel sample's lookups stay finite.
+    const auto dir = test::testDir();
+    test::GltfQuad quad;
+    quad.uv0 = {{-3e38f, 3e38f}, {3e38f, 3e38f}, {3e38f, -3e38f}, {-3e38f, -3e38f}};
+    quad.png = tilesPng(dir);
+    quad.material = {{"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 0}}}}}, {"doubleSided", true}};
+    const auto model = test::writeGltfQuad(dir, "huge_uvs", quad);
+    const std::string view = "--scene " + model.string() +
+                             " --eye 0.1,-1.35,0.22 --target 0,0.6,0 --up 0,0,1 --fov 50 --width 80 --height 60"
+                             " --sun-dir 0,0,-1 --sun-irradiance 3.14159265 --voxel-levels 5 --gi off";
+    for (int samples : {1, 4}) {
+        const ImageF albedo = renderSamples(dir, view, "albedo", samples);
+        ASSERT_FALSE(albedo.rgba.empty());
+        std::size_t bad = 0, lit = 0;
+        for (std::size_t i = 0; i < albedo.rgba.size(); i += 4) {
+            for (int c = 0; c < 3; ++c) bad += !(std::isfinite(albedo.rgba[i + c]) && albedo.rgba[i + c] >= 0.0f);
+            lit += albedo.rgba[i] > 0.0f;
+        }
+        EXPECT_EQ(bad, 0u) << samples << " samples";
+        EXPECT_GT(lit, 0u) << samples << " samples: the quad is in view";
+    }
+}

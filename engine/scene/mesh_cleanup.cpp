@@ -12,9 +12,18 @@
 namespace vct {
 namespace {
 
+// Beyond ±2²⁴ consecutive floats lie 2 apart: a texture coordinate there can no longer say even
+// which repeat of the texture it falls in, and multiplied by the texture's size in the samplers it
+// overflows (llvmpipe then returns NaN texels). Such coordinates carry no texture and are treated
+// like non-finite ones.
+constexpr double kLargestUsableUv = 16777216.0;
+
 // Named apart from vct::isFinite(dvec3): glm converts a dvec3 to a dvec2 implicitly, so an
 // overload of the same name would quietly check only x and y of a normal.
-bool isFiniteUv(const glm::dvec2& v) { return std::isfinite(v.x) && std::isfinite(v.y); }
+bool isUsableUv(const glm::dvec2& v) {
+    return std::isfinite(v.x) && std::isfinite(v.y) && std::abs(v.x) <= kLargestUsableUv &&
+           std::abs(v.y) <= kLargestUsableUv;
+}
 
 // ------------------------------------------------------------------------------------------------
 // Input checks
@@ -255,12 +264,13 @@ Bounds boundsOf(const std::vector<glm::dvec3>& positions, const std::vector<std:
     return bounds;
 }
 
-// A texture coordinate with its non-finite components set to 0 (counted in `repaired`).
+// A texture coordinate with its non-finite or unusably large components (isUsableUv) set to 0
+// (counted in `repaired`).
 glm::vec2 repairedUv(glm::dvec2 uv, std::size_t& repaired) {
-    if (!isFiniteUv(uv)) {
+    if (!isUsableUv(uv)) {
         ++repaired;
-        if (!std::isfinite(uv.x)) uv.x = 0.0;
-        if (!std::isfinite(uv.y)) uv.y = 0.0;
+        for (int i = 0; i < 2; ++i)
+            if (!(std::abs(uv[i]) <= kLargestUsableUv)) uv[i] = 0.0;
     }
     return glm::vec2(uv);
 }
@@ -296,7 +306,7 @@ std::vector<Vertex> localVertices(const WorldGeometry& g, const std::vector<std:
 void reportRepairs(const std::string& sourceName, const LoadReport& report) {
     if (report.repairedUvs > 0)
         logWarn(concat(sourceName, ": set ", report.repairedUvs,
-                       " non-finite texture coordinates to 0"));
+                       " non-finite texture coordinates or coordinates beyond ±2^24 (no texel can be told apart there) to 0"));
     if (report.repairedNormals > 0)
         logInfo(concat(sourceName, ": rebuilt ", report.repairedNormals,
                        " missing, zero or non-finite normals from the faces"));

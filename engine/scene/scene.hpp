@@ -69,7 +69,7 @@ struct LoadReport {
     std::size_t nonFinitePositions = 0;    // vertices with NaN/Inf position (or beyond ±1e18)
     std::size_t droppedTriangles = 0;      // removed because a vertex position was non-finite
     std::size_t repairedNormals = 0;       // missing, zero or non-finite normals regenerated
-    std::size_t repairedUvs = 0;           // non-finite UVs set to 0
+    std::size_t repairedUvs = 0;           // non-finite UVs, or beyond ±2^24, set to 0
     std::vector<std::string> missingTextures;
     // What the file asks for that vct does not do (an unsupported extension it uses, skins,
     // animations, single-sided materials, …), one line each, also logged once as a warning.
