@@ -238,6 +238,30 @@ TEST(GltfFeatures, TextureTransformRotatesOffsetsAndPicksTheUvSet) {
         }
 }
 
+// A transform whose scale reaches float's limit: the transformed coordinates overflow in the
+// sampler (1236 non-finite pixels on llvmpipe before it was refused). Ignored with a warning,
+// like a non-finite one; the image renders finite.
+TEST(GltfFeatures, TextureTransformBeyondUsableCoordinatesIsIgnored) {
+    const fs::path dir = vct::test::testDir();
+    GltfQuad quad;
+    quad.png = quadrantPng(dir);
+    quad.material = {
+        {"pbrMetallicRoughness",
+         {{"baseColorTexture", {{"index", 0}, {"extensions", {{"KHR_texture_transform", {{"scale", {3e38, 3e38}}}}}}}}}},
+        {"doubleSided", true}};
+    quad.top = {{"extensionsUsed", {"KHR_texture_transform"}}};
+    const fs::path model = vct::test::writeGltfQuad(dir, "huge_scale", quad);
+    EXPECT_EQ(vct::loadModelFile(model).materials.at(0).baseColorMapping.transform, glm::mat3(1.0f));
+    const fs::path out = dir / "huge_scale.png";
+    const auto result =
+        vct::test::runVct("render --scene " + model.string() + " --width 64 --height 48 --voxel-levels 5 --out " + out.string());
+    EXPECT_EQ(result.exitCode, 0) << result.output;
+    EXPECT_NE(result.output.find("KHR_texture_transform has a non-finite value or an offset or scale beyond ±2^24; ignored"),
+              std::string::npos)
+        << result.output;
+    EXPECT_TRUE(fs::exists(out));
+}
+
 namespace {
 
 // The same JSON as a GLB (the JSON chunk alone: the quad's buffer stays a data URI).

@@ -99,11 +99,15 @@ GltfMaterialExtras extrasOf(const nlohmann::json& material, const std::string& w
         const glm::vec2 offset = vec2Of(*t, "offset", glm::vec2(0.0f));
         const glm::vec2 scale = vec2Of(*t, "scale", glm::vec2(1.0f));
         const float rotation = float(gltfNumber(*t, "rotation", 0.0));
-        if (std::isfinite(offset.x) && std::isfinite(offset.y) && std::isfinite(scale.x) && std::isfinite(scale.y) &&
-            std::isfinite(rotation))
+        // Offsets and scales beyond ±2^24 are refused like the coordinates themselves
+        // (mesh_cleanup.cpp): they move texture coordinates where no texel can be told apart, and
+        // where multiplied by a texture's size they overflow (NaN texels on llvmpipe).
+        const auto usable = [](float v) { return std::abs(v) <= kLargestUsableUv; };
+        if (usable(offset.x) && usable(offset.y) && usable(scale.x) && usable(scale.y) && std::isfinite(rotation))
             extras.transform = fromGltfTransform(offset, rotation, scale);
         else
-            logWarn(concat(what, ": KHR_texture_transform has a non-finite value; ignored"));
+            logWarn(concat(what, ": KHR_texture_transform has a non-finite value or an offset or scale beyond ±2^24; "
+                                 "ignored"));
         if (const auto texCoord = gltfIndex(*t, "texCoord")) extras.texCoord = int(std::min<std::size_t>(*texCoord, 2));
     }
     const nlohmann::json* materialExtensions = gltfMember(material, "extensions");

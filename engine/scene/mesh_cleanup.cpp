@@ -8,15 +8,10 @@
 #include "core/error.hpp"
 #include "core/log.hpp"
 #include "core/vector_text.hpp"
+#include "scene/texture_mapping.hpp"
 
 namespace vct {
 namespace {
-
-// Beyond ±2²⁴ consecutive floats lie 2 apart: a texture coordinate there can no longer say even
-// which repeat of the texture it falls in, and multiplied by the texture's size in the samplers it
-// overflows (llvmpipe then returns NaN texels). Such coordinates carry no texture and are treated
-// like non-finite ones.
-constexpr double kLargestUsableUv = 16777216.0;
 
 // Named apart from vct::isFinite(dvec3): glm converts a dvec3 to a dvec2 implicitly, so an
 // overload of the same name would quietly check only x and y of a normal.

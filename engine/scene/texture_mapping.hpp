@@ -13,6 +13,12 @@ namespace vct {
 
 enum class TextureWrap { Repeat, ClampToEdge, MirroredRepeat };
 
+// Beyond ±2²⁴ consecutive floats lie 2 apart: a texture coordinate there can no longer say even
+// which repeat of the texture it falls in, and multiplied by a texture's size in a sampler it
+// overflows (llvmpipe then returns NaN texels). The loaders treat such coordinates, and transforms
+// with such offsets or scales, like non-finite ones.
+constexpr double kLargestUsableUv = 16777216.0;
+
 const char* textureWrapName(TextureWrap wrap);
 
 struct TextureMapping {
