@@ -5,6 +5,8 @@
 #include <fstream>
 #include <iterator>
 #include <set>
+#include <string>
+#include <vector>
 
 #include "core/image.hpp"
 #include "gltf_quad.hpp"
@@ -55,6 +57,20 @@ std::string tilesPng(const std::filesystem::path& dir) {
     writePng(file, image);
     std::ifstream in(file, std::ios::binary);
     return std::string(std::istreambuf_iterator<char>(in), {});
+}
+
+// The tiled quad (tilesPng) with texture coordinates `uv0`, seen at a grazing angle under a sun
+// whose direct radiance on it is its albedo: the `vct` options of that view.
+std::string grazingTiledQuadView(const std::filesystem::path& dir, const char* name,
+                                 std::vector<glm::vec2> uv0) {
+    test::GltfQuad quad;
+    quad.uv0 = std::move(uv0);
+    quad.png = tilesPng(dir);
+    quad.material = {{"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 0}}}}}, {"doubleSided", true}};
+    const auto model = test::writeGltfQuad(dir, name, quad);
+    return "--scene " + model.string() +
+           " --eye 0.1,-1.35,0.22 --target 0,0.6,0 --up 0,0,1 --fov 50 --width 80 --height 60"
+           " --sun-dir 0,0,-1 --sun-irradiance 3.14159265";
 }
 
 }  // namespace
@@ -115,14 +131,7 @@ TEST(PixelSamples, SixteenSamplesOfAGrazingTiledFloorConvergeToItsArea) {
     // still filtered over the whole pixel (mipmapped at the pixel's footprint, or anisotropic)
     // converge to a texture blurred by that filter instead.
     const auto dir = test::testDir();
-    test::GltfQuad quad;
-    quad.uv0 = {{0, 8}, {8, 8}, {8, 0}, {0, 0}};
-    quad.png = tilesPng(dir);
-    quad.material = {{"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 0}}}}}, {"doubleSided", true}};
-    const auto model = test::writeGltfQuad(dir, "tiles", quad);
-    const std::string view = "--scene " + model.string() +
-                             " --eye 0.1,-1.35,0.22 --target 0,0.6,0 --up 0,0,1 --fov 50 --width 80 --height 60"
-                             " --sun-dir 0,0,-1 --sun-irradiance 3.14159265";
+    const std::string view = grazingTiledQuadView(dir, "tiles", {{0, 8}, {8, 8}, {8, 0}, {0, 0}});
     const ImageF truth = referenceDirect(dir, view, 1024);
     ASSERT_FALSE(truth.rgba.empty());
     double error[2] = {0, 0};
@@ -146,14 +155,9 @@ TEST(PixelSamples, TextureCoordinatesNearFloatsLimitGiveAFiniteImage) {
     // image). The loader treats coordinates beyond ±2^24, where no texel can be told apart, like
     // non-finite ones (set to 0, with a warning); every pixel sample's lookups stay finite.
     const auto dir = test::testDir();
-    test::GltfQuad quad;
-    quad.uv0 = {{-3e38f, 3e38f}, {3e38f, 3e38f}, {3e38f, -3e38f}, {-3e38f, -3e38f}};
-    quad.png = tilesPng(dir);
-    quad.material = {{"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 0}}}}}, {"doubleSided", true}};
-    const auto model = test::writeGltfQuad(dir, "huge_uvs", quad);
-    const std::string view = "--scene " + model.string() +
-                             " --eye 0.1,-1.35,0.22 --target 0,0.6,0 --up 0,0,1 --fov 50 --width 80 --height 60"
-                             " --sun-dir 0,0,-1 --sun-irradiance 3.14159265 --voxel-levels 5 --gi off";
+    const std::string view =
+        grazingTiledQuadView(dir, "huge_uvs", {{-3e38f, 3e38f}, {3e38f, 3e38f}, {3e38f, -3e38f}, {-3e38f, -3e38f}}) +
+        " --voxel-levels 5 --gi off";
     for (int samples : {1, 4}) {
         const ImageF albedo = renderSamples(dir, view, "albedo", samples);
         ASSERT_FALSE(albedo.rgba.empty());
