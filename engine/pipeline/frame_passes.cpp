@@ -199,7 +199,7 @@ const PassTable kFramePasses = {{
      [](FrameResources& f, const FrameView&) { f.svo->bricks(); }},
     {Pass::BricksMip, "bricks_mip", Stage::Octree,
      {}, {R::LeafBricks}, {R::GeometryBricks}, unlessOctree,
-     "bricks_mip.comp, bricks_opacity.comp, bricks_complete.comp",
+     "bricks_mip.comp, bricks_opacity.comp, bricks_share.comp, bricks_complete.comp",
      [](FrameResources& f, const FrameView&) { f.svo->bricksMip(); }},
     {Pass::LightView, "light_view", Stage::Light,
      {I::Geometry, I::Materials, I::Lights, I::ShadowSettings}, {}, {R::LightViewMaps}, unlessLightViews,
@@ -215,7 +215,7 @@ const PassTable kFramePasses = {{
      [](FrameResources& f, const FrameView&) { filterLeafRadiance(f); }},
     {Pass::RadianceMip, "radiance_mip", Stage::Radiance,
      {}, {R::LeafRadiance, R::GeometryBricks}, {R::RadianceBricks}, unlessRadiance,
-     "radiance_mip.comp",
+     "radiance_mip.comp, radiance_share.comp",
      [](FrameResources& f, const FrameView&) {
          f.radianceFilter->mip(f.svo->octree(), *f.radiance);
          f.radiance->bricksBounces = 1;
@@ -224,7 +224,7 @@ const PassTable kFramePasses = {{
      {I::BounceSettings, I::ConeSettings}, {R::RadianceBricks, R::CellValues, R::CellRadiance}, {R::BouncedRadiance},
      unlessBounces,
      "bounce_gather.comp, border_age.comp, touch_parents.comp, touch_border.comp, radiance_clear.comp, radiance_leaves.comp, "
-     "radiance_mip.comp",
+     "radiance_mip.comp, radiance_share.comp",
      [](FrameResources& f, const FrameView&) { gatherBounces(f); }},
     {Pass::GBuffer, "gbuffer", Stage::Camera,
      {I::Geometry, I::Materials, I::Camera, I::OutputSize}, {}, {R::GBuffer}, unlessLitView,
