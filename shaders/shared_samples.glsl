@@ -30,5 +30,5 @@ ivec3 sampleOwner(ivec3 q, uint present) {
         for (int y = high.y; y >= low.y; --y)
             for (int x = high.x; x >= low.x; --x)
                 if ((present & (1u << uint((x + 1) + 3 * (y + 1) + 9 * (z + 1)))) != 0u) return ivec3(x, y, z);
-    return ivec3(0);  // not reached: the node itself is on the border
+    return ivec3(0);  // not reached: the node itself is always present
 }
