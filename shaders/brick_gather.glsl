@@ -7,8 +7,9 @@
 // bit-identical in every brick that holds it.
 // Requires voxel_common.glsl and octree.glsl.
 
-// The 3×3×3 nodes around `node` (level uLevel), itself in the middle: index (e.x+1) + 3(e.y+1) +
-// 9(e.z+1) for the offset e ∈ {−1,0,1}³; NONE where there is none.
+// The 3×3×3 nodes around `node` (level uLevel), itself in the middle: index aroundIndex(e) for the
+// offset e ∈ {−1,0,1}³; NONE where there is none.
+int aroundIndex(ivec3 e) { return (e.x + 1) + 3 * (e.y + 1) + 9 * (e.z + 1); }
 void nodesAround(uint node, out uint around[27]) {
     ivec3 coord = ivec3(unpackCell(nodeCoord[node]));
     int size = 1 << uLevel;

@@ -22,9 +22,10 @@ void main() {
     ivec3 origin = brickOrigin(node);
     for (int s = 0; s < 27; ++s) {
         ivec3 q = ivec3(s % 3, (s / 3) % 3, s / 9);
-        ivec3 owner = sampleOwner(q, present);
-        if (owner == ivec3(0)) continue;
-        ivec3 source = brickOrigin(around[(owner.x + 1) + 3 * (owner.y + 1) + 9 * (owner.z + 1)]) + q - 2 * owner;
+        uint owner;
+        ivec3 ownerSample;
+        if (!sampleFromOwner(around, present, q, owner, ownerSample)) continue;
+        ivec3 source = brickOrigin(owner) + ownerSample;
         imageStore(uOpacityPlus, origin + q, imageLoad(uOpacityPlus, source));
         imageStore(uOpacityMinus, origin + q, imageLoad(uOpacityMinus, source));
     }

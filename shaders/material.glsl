@@ -67,10 +67,8 @@ vec4 materialBaseColor(vec2 uv, vec3 vertexColor) {
 // The same over the pixel's footprint (footprintTexel), for the G-buffer's first pixel sample; the
 // later ones filter less (textureLodBias) and leave the pixel's area to the jitter.
 vec4 materialBaseColorOverPixel(vec2 uv, vec3 vertexColor) {
-    vec4 texel = vec4(1.0);
-    if (uHasTexture != 0)
-        texel = uTextureLodBias >= 0.0 ? footprintTexel(uv) : texture(uBaseColorTexture, uv, textureLodBias(uv));
-    return materialColorWith(texel, vertexColor);
+    if (uHasTexture == 0 || uTextureLodBias < 0.0) return materialBaseColor(uv, vertexColor);
+    return materialColorWith(footprintTexel(uv), vertexColor);
 }
 
 // The triangle's unit geometric normal turned to face `towards` (all surfaces are two-sided):

@@ -25,10 +25,10 @@ void main() {
     ivec3 origin = directionalBrickOrigin(node, 0);
     for (int s = 0; s < 27; ++s) {
         ivec3 q = ivec3(s % 3, (s / 3) % 3, s / 9);
-        ivec3 owner = sampleOwner(q, present);
-        if (owner == ivec3(0)) continue;
-        uint from = around[(owner.x + 1) + 3 * (owner.y + 1) + 9 * (owner.z + 1)];
-        ivec3 source = directionalBrickOrigin(from, 0) + q - 2 * owner;
+        uint owner;
+        ivec3 ownerSample;
+        if (!sampleFromOwner(around, present, q, owner, ownerSample)) continue;
+        ivec3 source = directionalBrickOrigin(owner, 0) + ownerSample;
         for (int i = 0; i < 6; ++i)
             imageStore(uDirectional, origin + q + directionOffset(i), imageLoad(uDirectional, source + directionOffset(i)));
     }

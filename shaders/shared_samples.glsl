@@ -29,6 +29,15 @@ ivec3 sampleOwner(ivec3 q, uint present) {
     for (int z = high.z; z >= low.z; --z)
         for (int y = high.y; y >= low.y; --y)
             for (int x = high.x; x >= low.x; --x)
-                if ((present & (1u << uint((x + 1) + 3 * (y + 1) + 9 * (z + 1)))) != 0u) return ivec3(x, y, z);
+                if ((present & (1u << uint(aroundIndex(ivec3(x, y, z))))) != 0u) return ivec3(x, y, z);
     return ivec3(0);  // not reached: the node itself is always present
+}
+
+// For the copy passes: where the node in the middle of `around` finds sample q, when another node
+// owns it: that node (`owner`) and q's place in its brick. False when the node owns q itself.
+bool sampleFromOwner(const uint around[27], uint present, ivec3 q, out uint owner, out ivec3 ownerSample) {
+    ivec3 offset = sampleOwner(q, present);
+    owner = around[aroundIndex(offset)];
+    ownerSample = q - 2 * offset;
+    return offset != ivec3(0);
 }

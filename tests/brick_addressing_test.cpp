@@ -40,12 +40,12 @@ TEST(BrickAddressing, OriginsAreExactForEveryPoolShape) {
     auto context = gl::createContext(gl::defaultBackend());
     // From one brick to the most a 3D texture holds, for pools of one and of six directions.
     const std::uint32_t counts[] = {1, 2, 27, 1000, 628'582, 2'700'000, 16'777'217, 52'000'000, 300'000'000};
+    GLint max3D = 0;
+    glGetIntegerv(GL_MAX_3D_TEXTURE_SIZE, &max3D);
     std::mt19937 random(7);
     std::vector<AddressCase> cases;
     for (int depthShare : {1, 6})
         for (std::uint32_t count : counts) {
-            GLint max3D = 0;
-            glGetIntegerv(GL_MAX_3D_TEXTURE_SIZE, &max3D);
             const std::int64_t capacity = std::int64_t(max3D / 3) * (max3D / 3) * std::max(max3D / 3 / depthShare, 1);
             if (count > capacity) continue;
             const glm::ivec3 bricks = brickPoolLayout(count, "bricks", depthShare);

@@ -102,8 +102,8 @@ GltfMaterialExtras extrasOf(const nlohmann::json& material, const std::string& w
         // Offsets and scales beyond ±2^24 are refused like the coordinates themselves
         // (mesh_cleanup.cpp): they move texture coordinates where no texel can be told apart, and
         // where multiplied by a texture's size they overflow (NaN texels on llvmpipe).
-        const auto usable = [](float v) { return std::abs(v) <= kLargestUsableUv; };
-        if (usable(offset.x) && usable(offset.y) && usable(scale.x) && usable(scale.y) && std::isfinite(rotation))
+        if (isUsableTextureCoordinate(offset.x) && isUsableTextureCoordinate(offset.y) &&
+            isUsableTextureCoordinate(scale.x) && isUsableTextureCoordinate(scale.y) && std::isfinite(rotation))
             extras.transform = fromGltfTransform(offset, rotation, scale);
         else
             logWarn(concat(what, ": KHR_texture_transform has a non-finite value or an offset or scale beyond ±2^24; "

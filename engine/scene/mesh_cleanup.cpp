@@ -15,10 +15,7 @@ namespace {
 
 // Named apart from vct::isFinite(dvec3): glm converts a dvec3 to a dvec2 implicitly, so an
 // overload of the same name would quietly check only x and y of a normal.
-bool isUsableUv(const glm::dvec2& v) {
-    return std::isfinite(v.x) && std::isfinite(v.y) && std::abs(v.x) <= kLargestUsableUv &&
-           std::abs(v.y) <= kLargestUsableUv;
-}
+bool isUsableUv(const glm::dvec2& v) { return isUsableTextureCoordinate(v.x) && isUsableTextureCoordinate(v.y); }
 
 // ------------------------------------------------------------------------------------------------
 // Input checks
@@ -265,7 +262,7 @@ glm::vec2 repairedUv(glm::dvec2 uv, std::size_t& repaired) {
     if (!isUsableUv(uv)) {
         ++repaired;
         for (int i = 0; i < 2; ++i)
-            if (!(std::abs(uv[i]) <= kLargestUsableUv)) uv[i] = 0.0;
+            if (!isUsableTextureCoordinate(uv[i])) uv[i] = 0.0;
     }
     return glm::vec2(uv);
 }

@@ -7,6 +7,8 @@
 //
 // Everything is in vct's UV convention (Vertex::uv: v = 0 at the bottom of the image). glTF's
 // transform is defined with v = 0 at the top; fromGltfTransform converts.
+#include <cmath>
+
 #include <glm/glm.hpp>
 
 namespace vct {
@@ -18,6 +20,7 @@ enum class TextureWrap { Repeat, ClampToEdge, MirroredRepeat };
 // overflows (llvmpipe then returns NaN texels). The loaders treat such coordinates, and transforms
 // with such offsets or scales, like non-finite ones.
 constexpr double kLargestUsableUv = 16777216.0;
+inline bool isUsableTextureCoordinate(double v) { return std::abs(v) <= kLargestUsableUv; }  // false for NaN
 
 const char* textureWrapName(TextureWrap wrap);
 
