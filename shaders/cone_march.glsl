@@ -13,6 +13,7 @@
 #include "cell_radiance.glsl"
 #include "facing.glsl"
 #include "cone_regions.glsl"
+#include "narrow_cone_directions.glsl"
 
 // What lies ahead of each brick sample along each of the six axis directions (brick_layout.hpp,
 // "Slabs"; directional_pool.glsl): the radiance that reaches the sample and the slab's density,
@@ -38,6 +39,10 @@ uniform float uRayTanHalfAngle;
 // The narrow cones [uRayFirst, uRayEnd) of the uRayCount: a dispatch traces a few of them
 // (cone_trace.cpp, kNarrowConesPerDispatch), each adding its part to what the ones before stored.
 uniform int uRayFirst, uRayEnd;
+// The later samples of an accumulated frame (cone_trace.cpp, conesForSample): >= 0, where this
+// sample's narrow cones start in a sequence of directions that each block of traced pixels
+// continues over the samples; -1: every apex draws its own directions.
+uniform int uRaySequence;
 uniform vec3 uVoxelOrigin;
 uniform float uVoxelScale;
 // Narrow cones thinner than a voxel read the voxels themselves (sampleVoxels) while they hold the
@@ -388,23 +393,29 @@ vec2 hashToUnitSquare(vec3 p) {
     return vec2(float(h & 0xffffu), float(h >> 16)) / 65536.0;
 }
 
-// Narrow cones instead of the cone set (`--cone-rays`): uRayCount cones, each of weight π/N,
-// whose axes sample the cosine-weighted hemisphere (sin²θ and azimuth uniform) on a Fibonacci
-// lattice, k/N against k/φ, shifted by an amount that changes from apex to apex. A cone a few
+// The shift of a pixel's narrow-cone directions: from its apex, or, for the later samples of an
+// accumulated frame, from its block of traced pixels `stratum`, which keeps it from sample to
+// sample while the apex moves with the pixel's jitter.
+vec2 narrowConeShift(vec3 origin, ivec2 stratum) {
+    return uRaySequence >= 0 ? hashToUnitSquare(vec3(vec2(stratum), -1.0)) : hashToUnitSquare(origin);
+}
+
+// Narrow cones instead of the cone set (`--cone-rays`, and the later samples of an accumulated
+// frame): uRayCount cones, each of weight π/N, whose axes sample the cosine-weighted hemisphere
+// (sin²θ and azimuth uniform, narrow_cone_directions.glsl) shifted by `shift` (narrowConeShift). A cone a few
 // voxels wide keeps its samples on fine levels, where a sample's opacity and light are the
 // geometry's own, so occlusion and light arrive from where the path tracer finds them; the noise
 // of N directions per pixel is what the upsampling and the edge-aware filter average out across
 // the surface. The share of a cone behind the triangle's plane is blocked by it, as in the cone set.
-vec4 gatherNarrowCones(vec3 origin, vec3 normal, vec3 surfaceNormal) {
+vec4 gatherNarrowCones(vec3 origin, vec3 normal, vec3 surfaceNormal, vec2 shift) {
     vec3 tangent, bitangent;
     orthonormalBasis(normal, tangent, bitangent);
-    const vec2 shift = hashToUnitSquare(origin);
     const float count = float(uRayCount);
-    const float goldenFraction = 0.61803398875;  // 1/φ
     vec4 gathered = vec4(0.0);
     for (int k = uRayFirst; k < uRayEnd; ++k) {
-        float sin2 = fract((float(k) + 0.5) / count + shift.x);
-        float azimuth = 2.0 * PI * fract(float(k) * goldenFraction + shift.y);
+        const vec2 point = narrowConePoint(k, count, shift, uRaySequence);
+        float sin2 = point.x;
+        float azimuth = 2.0 * PI * point.y;
         float sinTheta = sqrt(sin2);
         vec3 d = vec3(sinTheta * cos(azimuth), sinTheta * sin(azimuth), sqrt(max(1.0 - sin2, 0.0)));
         if (uOnlyCone >= 0 && coneRegionOf(uConeCount, d) != uOnlyCone) continue;
@@ -426,8 +437,9 @@ vec4 gatherNarrowCones(vec3 origin, vec3 normal, vec3 surfaceNormal) {
 // behind it, so where smooth shading leans `normal` away from it, each cone counts only the share
 // it has in front of that plane beyond the share it has in front of its own (which the cone set's
 // weights already account for: on a flat surface every cone keeps its whole weight).
-vec4 gatherIrradiance(vec3 origin, vec3 normal, vec3 surfaceNormal) {
-    if (uRayCount > 0) return gatherNarrowCones(origin, normal, surfaceNormal);
+// `narrowShift` shifts the directions of narrow cones (narrowConeShift).
+vec4 gatherIrradiance(vec3 origin, vec3 normal, vec3 surfaceNormal, vec2 narrowShift) {
+    if (uRayCount > 0) return gatherNarrowCones(origin, normal, surfaceNormal, narrowShift);
     vec3 tangent, bitangent;
     orthonormalBasis(normal, tangent, bitangent);
     vec4 gathered = vec4(0.0);
@@ -447,4 +459,10 @@ vec4 gatherIrradiance(vec3 origin, vec3 normal, vec3 surfaceNormal) {
         gathered += uConeWeight[c] * cone;
     }
     return gathered;
+}
+
+// The same with narrow cones whose directions each apex draws (the bounce pass, which traces the
+// cone set).
+vec4 gatherIrradiance(vec3 origin, vec3 normal, vec3 surfaceNormal) {
+    return gatherIrradiance(origin, normal, surfaceNormal, hashToUnitSquare(origin));
 }

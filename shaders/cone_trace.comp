@@ -56,6 +56,6 @@ void main() {
             count64(CONE_COUNTER_SKY_PIXELS, 1u);
         return;
     }
-    storeTraced(cell, tracePixel(pixel, position.xyz, normalize(texelFetch(uNormal, pixel, 0).xyz)));
+    storeTraced(cell, tracePixel(pixel, cell, position.xyz, normalize(texelFetch(uNormal, pixel, 0).xyz)));
     if (uDownscale > 1) imageStore(uTracedPixel, cell, uvec4(packTracedPixel(pixel)));
 }

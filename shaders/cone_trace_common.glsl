@@ -37,10 +37,12 @@ void storeTraced(ivec2 at, vec4 traced) {
 // counted as one traced pixel with its samples. No light arrives from behind the pixel's triangle
 // (gatherIrradiance), however far smooth shading leans the normal from it. A dispatch that
 // continues the trace returns its part: the irradiance its cones add and the visibility they take
-// away (storeTraced adds it).
-vec4 tracePixel(ivec2 pixel, vec3 position, vec3 normal) {
+// away (storeTraced adds it). `stratum`: the block of traced pixels the pixel belongs to, whose
+// narrow cones continue one sequence of directions over the samples (narrowConeShift).
+vec4 tracePixel(ivec2 pixel, ivec2 stratum, vec3 position, vec3 normal) {
     const vec3 origin = (position - uVoxelOrigin) * uVoxelScale + normal * uConeOffset;
-    const vec4 gathered = gatherIrradiance(origin, normal, texelFetch(uGeometricNormal, pixel, 0).xyz);
+    const vec4 gathered = gatherIrradiance(origin, normal, texelFetch(uGeometricNormal, pixel, 0).xyz,
+                                           narrowConeShift(origin, stratum));
     count64(CONE_COUNTER_SAMPLES, samplesTaken);
     count64(CONE_COUNTER_SAMPLES_SAVED, samplesSaved);
     if (!continuesTrace()) count64(CONE_COUNTER_TRACED_PIXELS, 1u);

@@ -32,7 +32,7 @@ void main() {
     if (listed >= coneCounters[CONE_COUNTER_OWN_TRACES]) return;
     const ivec2 pixel = unpackTracedPixel(ownTracePixels[listed]);
     const vec3 position = texelFetch(uPosition, pixel, 0).xyz;
-    storeTraced(pixel, tracePixel(pixel, position, normalize(texelFetch(uNormal, pixel, 0).xyz)));
+    storeTraced(pixel, tracePixel(pixel, pixel / uDownscale, position, normalize(texelFetch(uNormal, pixel, 0).xyz)));
 }
 #else
 

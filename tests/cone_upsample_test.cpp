@@ -31,9 +31,13 @@ struct IndirectImage {
     ConeStatistics cones;
 };
 
+// `samples` accumulated, all of the cone set: the later samples' narrow cones
+// (render/cone_trace.hpp, conesForSample) would add their noise to what blocks change.
 IndirectImage renderIndirect(const Scene& scene, GiResolution resolution, int samples, int width = 160,
                              int height = 120) {
-    Renderer renderer(scene, indirectSettings(resolution, width, height));
+    RenderSettings settings = indirectSettings(resolution, width, height);
+    settings.cones.narrowConesAfterFirstSample = false;
+    Renderer renderer(scene, settings);
     for (int sample = 0; sample < samples; ++sample) renderer.renderFrame(scene.cameras[0], sample);
     return {renderer.readHdr(), renderer.statistics().cones};
 }

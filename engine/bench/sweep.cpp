@@ -81,7 +81,8 @@ const std::vector<std::string>& parameterNames() {
     static const std::vector<std::string> names = {"voxel_levels", "cones",          "cone_aperture", "cone_step",
                                                    "cone_offset",  "cone_lift",      "bricks",        "light_view_res",
                                                    "pcf_radius",   "gi",             "bounces",       "samples",
-                                                   "gi_resolution", "shadow_res",    "gi_filter",     "cone_rays"};
+                                                   "gi_resolution", "shadow_res",    "gi_filter",     "cone_rays",
+                                                   "sample_cones"};
     return names;
 }
 
@@ -96,6 +97,10 @@ void applyParameter(PointSettings& s, const std::string& name, const Json& v) {
     } else if (name == "cone_rays") {
         s.cones.rays = integer(v, what, 0, 64);
         validateConeSettings(s.cones);
+    } else if (name == "sample_cones") {
+        if (!v.is_string() || (v.get<std::string>() != "narrow" && v.get<std::string>() != "set"))
+            fail(what, " must be \"narrow\" or \"set\"");
+        s.cones.narrowConesAfterFirstSample = v.get<std::string>() == "narrow";
     } else if (name == "cone_aperture") {
         s.cones.apertureScale = float(number(v, what, 1e-3, 4.0));
     } else if (name == "cone_step") {
@@ -140,6 +145,7 @@ std::string parameterValue(const PointSettings& s, const std::string& name) {
     if (name == "voxel_levels") return std::to_string(s.voxelLevels);
     if (name == "cones") return std::to_string(s.cones.cones);
     if (name == "cone_rays") return std::to_string(s.cones.rays);
+    if (name == "sample_cones") return s.cones.narrowConesAfterFirstSample ? "narrow" : "set";
     if (name == "cone_aperture") return formatNumber(s.cones.apertureScale);
     if (name == "cone_step") return formatNumber(s.cones.step);
     if (name == "cone_offset") return formatNumber(s.cones.offset);

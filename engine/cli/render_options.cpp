@@ -45,6 +45,12 @@ void addRenderSettingsOptions(CLI::App& command, RenderSettingsOptions& o) {
                        "narrow cones per traced pixel instead of the cone set (1..64; 0: the cone set): "
                        "closer to the path tracer, about 16x the cone-tracing time at 16")
         ->capture_default_str();
+    command.add_option("--sample-cones", o.sampleCones,
+                       "what the samples after the first of an accumulated frame (--samples, the viewer) trace where "
+                       "the frame traces the cone set: narrow (one narrow cone per traced pixel, its direction "
+                       "stratified over the samples: the average converges to the narrow cones' far smaller error) "
+                       "or set (the cone set at every sample)")
+        ->capture_default_str();
     command.add_option("--only-cone", o.cones.onlyCone,
                        "diagnostic: only cone K of the set gathers light (0 = the cone along the normal; with "
                        "--cone-rays the narrow cones in its region of the hemisphere; compare with vct reference "
@@ -86,6 +92,9 @@ RenderSettings renderSettingsFromOptions(const RenderSettingsOptions& o, const S
     settings.photons = !o.noPhotons;
     settings.bounces = o.bounces;
     settings.cones = o.cones;
+    if (o.sampleCones != "narrow" && o.sampleCones != "set")
+        fail("--sample-cones must be narrow or set, not '", o.sampleCones, "'");
+    settings.cones.narrowConesAfterFirstSample = o.sampleCones == "narrow";
     settings.giResolution = parseGiResolution(o.giResolution);
     settings.giFilter = o.giFilter;
     validateRenderSettings(settings);

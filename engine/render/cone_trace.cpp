@@ -127,6 +127,7 @@ void setConeMarchUniforms(gl::ComputeCall& call, const Octree& octree, const Rad
         .uniform("uRayCount", settings.rays)
         .uniform("uRayFirst", 0)
         .uniform("uRayEnd", settings.rays)
+        .uniform("uRaySequence", -1)
         .uniform("uRayTanHalfAngle", kNarrowConeTan * settings.apertureScale)
         .uniform("uVoxelOrigin", glm::vec3(octree.grid.localMin))
         .uniform("uVoxelScale", float(1.0 / octree.grid.voxelSize))
@@ -136,8 +137,19 @@ void setConeMarchUniforms(gl::ComputeCall& call, const Octree& octree, const Rad
         .storage(gl::SSBO_CELL_EXIT_SHARES, radiance.cellExitShares);
 }
 
+SampleCones conesForSample(const ConeSettings& frame, int sample) {
+    SampleCones s{frame, -1};
+    if (sample < 1 || frame.rays > 0 || !frame.narrowConesAfterFirstSample) return s;
+    s.cones.rays = kNarrowConesPerLaterSample;
+    s.cones.step = kLaterSampleNarrowConeStep;
+    s.raySequence = (sample - 1) * kNarrowConesPerLaterSample;
+    return s;
+}
+
 void ConeTrace::render(const GBuffer& gbuffer, const Octree& octree, const RadianceVolume& radiance,
-                       const ConeSettings& settings, GiResolution resolution, int rotation, float filterVoxels) {
+                       const ConeSettings& frame, GiResolution resolution, int sample, float filterVoxels) {
+    const SampleCones sampleCones = conesForSample(frame, sample);
+    const ConeSettings& settings = sampleCones.cones;
     const int block = giBlockSize(resolution, width_, height_);
     const bool inBlocks = block > 1;  // one pixel of each block traced, the others upsampled
     const int tracedWidth = (width_ + block - 1) / block, tracedHeight = (height_ + block - 1) / block;
@@ -163,7 +175,8 @@ void ConeTrace::render(const GBuffer& gbuffer, const Octree& octree, const Radia
             .texture(gl::TEXTURE_GBUFFER_GEOMETRIC_NORMAL, gbuffer.geometricNormal())
             .texture(gl::TEXTURE_GBUFFER_POSITION, gbuffer.position())
             .storage(gl::SSBO_CONE_COUNTERS, counters_)
-            .uniform("uDownscale", block);
+            .uniform("uDownscale", block)
+            .uniform("uRaySequence", sampleCones.raySequence);
         return call;
     };
     // Narrow cones go a few per dispatch (kNarrowConesPerDispatch), each dispatch adding to what
@@ -179,7 +192,7 @@ void ConeTrace::render(const GBuffer& gbuffer, const Octree& octree, const Radia
         selectBatch(call, batch);
         call.image(gl::IMAGE_INDIRECT, inBlocks ? traced_.id() : indirect_.id(), GL_READ_WRITE, GL_RGBA32F)
             .image(gl::IMAGE_TRACED_PIXEL, inBlocks ? tracedPixel_.id() : 0, GL_WRITE_ONLY, GL_R32UI)
-            .uniform("uRotation", rotation & (block * block - 1))
+            .uniform("uRotation", sample & (block * block - 1))
             .dispatchImage(tracedWidth, tracedHeight, GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
     }
     // The filter runs on the traced image; a different image size (another GI resolution) makes

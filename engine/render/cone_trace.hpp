@@ -39,9 +39,38 @@ struct ConeSettings {
     // half-angle atan(kNarrowConeTan × apertureScale), their axes spread anew at every pixel; 0: the
     // cone set.
     int rays = 0;
+    // What the samples after the first of an accumulated frame trace (`--samples`, the viewer's
+    // refinement) where the frame traces the cone set: narrow cones (conesForSample; true, the
+    // default) or the cone set again (`--sample-cones set`).
+    bool narrowConesAfterFirstSample = true;
 
     bool operator==(const ConeSettings&) const = default;
 };
+
+// The narrow cones that the later samples of an accumulated frame trace in place of the cone set.
+// The cone set's errors are biases of its few wide cones (light collected across a footprint,
+// blocked by a wall beside the path), the same at every sample, so averaging samples of it
+// converges to its bias; narrow cones err much less and spread the rest as noise, which
+// averaging removes. One cone per traced pixel and sample: over N samples a block of pixels has
+// traced N directions, stratified (SampleCones::raySequence), for less than the cone set's time
+// per sample. A step of a whole cone diameter (the set's default is half) measured as close to
+// the path tracer in about 60 % of the time (docs/benchmark.md, "Narrow cones").
+constexpr int kNarrowConesPerLaterSample = 1;
+constexpr float kLaterSampleNarrowConeStep = 1.0f;
+
+// What pixel sample `sample` of a frame traces.
+struct SampleCones {
+    ConeSettings cones;
+    // >= 0: where this sample's narrow cones start in a sequence of directions that each block of
+    // traced pixels continues from sample to sample, so that the directions of all samples
+    // together cover the hemisphere evenly; -1: every apex draws its own (shaders/cone_march.glsl).
+    int raySequence = -1;
+};
+// Sample 0, alone in a plain frame, traces `frame` as it is. With the cone set and
+// narrowConesAfterFirstSample, every later sample k traces kNarrowConesPerLaterSample narrow
+// cones, the (k−1)-th of the sequence; the average over N samples then holds the cone set with
+// weight 1/N. Explicit narrow cones (`--cone-rays`) trace as asked at every sample.
+SampleCones conesForSample(const ConeSettings& frame, int sample);
 
 // How many pixels one trace of the cone set serves: each pixel its own, or one pixel of each 2×2
 // (half) or 4×4 (quarter) block, the others taking theirs from the traced pixels that share their
@@ -80,11 +109,12 @@ struct ConeStatistics {
 class ConeTrace {
 public:
     ConeTrace(int width, int height);
-    // `rotation` turns which pixel of each block is traced (the pixel sample, so that
-    // accumulated samples trace every pixel in turn). `filterVoxels`: the width of the
-    // edge-aware filter of what the cones traced (indirect_filter.hpp), 0: none.
-    void render(const GBuffer& gbuffer, const Octree& octree, const RadianceVolume& radiance, const ConeSettings& settings,
-                GiResolution resolution, int rotation, float filterVoxels);
+    // `sample`: the pixel sample of an accumulated frame. It turns which pixel of each block is
+    // traced, so that accumulated samples trace every pixel in turn, and chooses the cones
+    // (conesForSample). `filterVoxels`: the width of the edge-aware filter of what the cones traced
+    // (indirect_filter.hpp), 0: none.
+    void render(const GBuffer& gbuffer, const Octree& octree, const RadianceVolume& radiance, const ConeSettings& frame,
+                GiResolution resolution, int sample, float filterVoxels);
     GLuint indirect() const { return result_; }  // RGBA32F: irradiance, visibility
     ConeStatistics statistics() const;  // of the last render (reads back 32 bytes)
     std::size_t bytes() const;
