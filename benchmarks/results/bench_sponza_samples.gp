@@ -2,32 +2,32 @@
 set terminal pngcairo size 2100,700 enhanced font 'DejaVu Sans,10'
 set output "bench_sponza_samples.png"
 $engine << EOD
-2144 0.0343703 0.0139314 "default"
-2615 0.0242664 0.012618 "samples=4"
-4942 0.0163295 0.0123104 "samples=16"
+1954 0.0336315 0.0137102 "default"
+2413 0.0232971 0.0106979 "samples=4"
+4135 0.013335 0.00801994 "samples=16"
 EOD
 $pathtracer << EOD
-41.16 0.100813 0.078527 "1"
-154.7 0.0538738 0.0398726 "4"
-624.3 0.0270134 0.0199552 "16"
-2462 0.0138254 0.0102089 "64"
+46.32 0.100813 0.078527 "1"
+186.5 0.0538738 0.0398726 "4"
+727.5 0.0270134 0.0199552 "16"
+3195 0.0138254 0.0102089 "64"
 EOD
 $pareto << EOD
-2144 0.0343703 0.0139314 "default"
-2615 0.0242664 0.012618 "samples=4"
-4942 0.0163295 0.0123104 "samples=16"
+1954 0.0336315 0.0137102 "default"
+2413 0.0232971 0.0106979 "samples=4"
+4135 0.013335 0.00801994 "samples=16"
 EOD
 $paretoIndirect << EOD
-2144 0.0343703 0.0139314 "default"
-2615 0.0242664 0.012618 "samples=4"
-4942 0.0163295 0.0123104 "samples=16"
+1954 0.0336315 0.0137102 "default"
+2413 0.0232971 0.0106979 "samples=4"
+4135 0.013335 0.00801994 "samples=16"
 EOD
 $default << EOD
-2144 0.0343703 0.0139314 "default"
+1954 0.0336315 0.0137102 "default"
 EOD
 set xtics ("1" 1, "2" 2, "5" 5, "10" 10, "20" 20, "50" 50, "100" 100, "200" 200, "500" 500, "1000" 1000, "2000" 2000, "5000" 5000, "10000" 10000, "20000" 20000, "50000" 50000, "100000" 100000, "200000" 200000, "500000" 500000)
 noise = 0.00337035
-set multiplot layout 1,3 title "sponza 320x180: error against time, vct settings and the path tracer (1 bounce, reference 1024 spp), llvmpipe (LLVM 15.0.6, 256 bits), 2026-11-25" font ',12'
+set multiplot layout 1,3 title "sponza 320x180: error against time, vct settings and the path tracer (1 bounce, reference 1024 spp), llvmpipe (LLVM 15.0.6, 256 bits), 2026-11-27" font ',12'
 set logscale xy
 set grid xtics ytics mxtics mytics lc rgb '#e0e0e0'
 set xlabel 'time (ms, log): vct full warm frame / path-tracer render, same CPU'
@@ -59,8 +59,8 @@ unset logscale y
 set ytics auto
 set format y '%g'
 set xtics ("100" 100, "200" 200, "500" 500, "1000" 1000, "2000" 2000, "5000" 5000, "10000" 10000, "20000" 20000, "50000" 50000, "100000" 100000, "200000" 200000, "500000" 500000)
-set xrange [1649:8895.52]
-set yrange [0.0148862:0.0358136]
+set xrange [1502.82:7443.74]
+set yrange [0.0117112:0.0352552]
 set key top left box opaque font ',9'
 set ylabel 'RMSE of the full image vs reference (linear)'
 set title 'vct points only (zoom; full image)'
