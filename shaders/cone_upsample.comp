@@ -8,11 +8,15 @@ layout(local_size_x = 8, local_size_y = 8) in;
 // from the traced pixels of the four nearest blocks (cone_trace.comp), each weighted by how near
 // its block is (bilinear), how alike the normals are and how close the traced point lies to this
 // pixel's tangent plane. Irradiance varies slowly along a surface but jumps across edges, so a neighbour on
-// another surface must not count. A pixel that no neighbour shares its surface with (a thin
-// object, a silhouette) traces its own cones, so no pixel takes light from the wrong surface:
-// the upsampling lists those pixels, and a second dispatch (TRACE_LISTED) traces them. Scattered
-// among pixels that only interpolate, each would hold up its whole SIMD group; listed, every
-// invocation of the second dispatch traces.
+// another surface must not count. Where none of the four shares the pixel's surface (a silhouette,
+// the rim of a vase), the sixteen blocks around it are asked, each weighted by a tent twice as
+// wide: a surface that the nearest traced pixels miss is usually met one block further, and a
+// traced pixel two blocks away on the same plane is as good a source of slowly varying light. A
+// pixel that none of those shares its surface with (a thin object) traces its own cones, so no
+// pixel takes light from the wrong surface: the upsampling lists those pixels, and a second
+// dispatch (TRACE_LISTED) traces them. Scattered among pixels that only interpolate, each would
+// hold up its whole SIMD group; listed, every invocation of the second dispatch traces, but each
+// still costs a whole trace, which is why the wider ring is asked first.
 #include "cone_march.glsl"
 #include "cone_trace_common.glsl"
 
@@ -41,6 +45,34 @@ void main() {
 const float kPlaneVoxels = 1.0;
 const float kMinWeight = 0.05;
 
+// The traced pixels of the blocks within `radius` blocks of `at` (the pixel in block units) that
+// share the surface at `position` with `normal`: their irradiance summed,
+// each weighted by a tent of that radius (bilinear for radius 1) and by sameSurfaceWeight; the
+// sum of the weights in `weightSum`.
+vec4 sameSurfaceTraced(vec3 position, vec3 normal, vec2 at, int radius, out float weightSum) {
+    const ivec2 blocks = textureSize(uTraced, 0);
+    const ivec2 base = ivec2(floor(at));
+    const vec2 f = at - vec2(base);
+    vec4 sum = vec4(0.0);
+    weightSum = 0.0;
+    for (int y = 1 - radius; y <= radius; ++y)
+        for (int x = 1 - radius; x <= radius; ++x) {
+            const ivec2 offset = ivec2(x, y);
+            const ivec2 cell = clamp(base + offset, ivec2(0), blocks - 1);
+            const uint traced = texelFetch(uTracedPixel, cell, 0).r;
+            if (traced == NO_TRACED_PIXEL) continue;
+            const ivec2 tracedPixel = unpackTracedPixel(traced);
+            const vec3 tracedNormal = normalize(texelFetch(uNormal, tracedPixel, 0).xyz);
+            const vec3 tracedPosition = texelFetch(uPosition, tracedPixel, 0).xyz;
+            const vec2 tent = max(1.0 - abs(vec2(offset) - f) / float(radius), 0.0);
+            const float weight = tent.x * tent.y * sameSurfaceWeight(normal, tracedNormal,
+                                                                     (tracedPosition - position) * uVoxelScale, kPlaneVoxels);
+            sum += weight * texelFetch(uTraced, cell, 0);
+            weightSum += weight;
+        }
+    return sum;
+}
+
 void main() {
     const ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
     if (any(greaterThanEqual(pixel, imageSize(uIndirect)))) return;
@@ -51,28 +83,11 @@ void main() {
         return;
     }
     const vec3 normal = normalize(texelFetch(uNormal, pixel, 0).xyz);
-    const ivec2 blocks = textureSize(uTraced, 0);
-    // Block centres sit at B·cell + (B − 1)/2 in pixels: the four around this pixel and their
-    // bilinear weights.
+    // Block centres sit at B·cell + (B − 1)/2 in pixels.
     const vec2 at = (vec2(pixel) + 0.5) / float(uDownscale) - 0.5;
-    const ivec2 base = ivec2(floor(at));
-    const vec2 f = at - vec2(base);
-    vec4 sum = vec4(0.0);
-    float weightSum = 0.0;
-    for (int k = 0; k < 4; ++k) {
-        const ivec2 offset = ivec2(k & 1, k >> 1);
-        const ivec2 cell = clamp(base + offset, ivec2(0), blocks - 1);
-        const uint traced = texelFetch(uTracedPixel, cell, 0).r;
-        if (traced == NO_TRACED_PIXEL) continue;
-        const ivec2 tracedPixel = unpackTracedPixel(traced);
-        const vec3 tracedNormal = normalize(texelFetch(uNormal, tracedPixel, 0).xyz);
-        const vec3 tracedPosition = texelFetch(uPosition, tracedPixel, 0).xyz;
-        const float bilinear = (offset.x == 1 ? f.x : 1.0 - f.x) * (offset.y == 1 ? f.y : 1.0 - f.y);
-        const float weight = bilinear * sameSurfaceWeight(normal, tracedNormal,
-                                                          (tracedPosition - position.xyz) * uVoxelScale, kPlaneVoxels);
-        sum += weight * texelFetch(uTraced, cell, 0);
-        weightSum += weight;
-    }
+    float weightSum;
+    vec4 sum = sameSurfaceTraced(position.xyz, normal, at, 1, weightSum);
+    if (weightSum < kMinWeight) sum = sameSurfaceTraced(position.xyz, normal, at, 2, weightSum);
     if (weightSum >= kMinWeight) {
         imageStore(uIndirect, pixel, sum / weightSum);
         return;
