@@ -475,7 +475,7 @@ std::string writeChart(const std::filesystem::path& script, const std::filesyste
            << "     " << (panel == 0 ? "$pareto" : "$paretoIndirect") << " using 1:" << column
            << " with linespoints pt 4 ps 1.9 lw 2 dt 2 lc rgb '#1f77b4' title 'Pareto front (vct)', \\\n"
            << "     $engine using 1:" << column << " with points pt 7 ps 1.0 lc rgb '#1f77b4' title 'vct settings', \\\n"
-           << "     $engine using 1:" << column << ":4 with labels left offset char 0.6,0.35 font ',8' notitle, \\\n"
+           << "     $engine using 1:" << column << ":4 with labels left offset char 0.6,0.35 font ',8' noenhanced notitle, \\\n"
            << "     $default using 1:" << column << " with points pt 6 ps 2.4 lw 2 lc rgb 'black' title 'vct default', \\\n"
            << "     noise with lines dt 3 lc rgb '#808080' title 'reference noise (est.)'\n";
     }
@@ -494,7 +494,7 @@ std::string writeChart(const std::filesystem::path& script, const std::filesyste
         gp << "set title 'vct points only (zoom; full image)'\n";
         gp << "plot $pareto using 1:2 with linespoints pt 4 ps 1.9 lw 2 dt 2 lc rgb '#1f77b4' title 'Pareto front (vct)', \\\n"
            << "     $engine using 1:2 with points pt 7 ps 1.0 lc rgb '#1f77b4' notitle, \\\n"
-           << "     $engine using 1:2:4 with labels left offset char 0.6,0.35 font ',8' notitle, \\\n"
+           << "     $engine using 1:2:4 with labels left offset char 0.6,0.35 font ',8' noenhanced notitle, \\\n"
            << "     $default using 1:2 with points pt 6 ps 2.4 lw 2 lc rgb 'black' title 'vct default', \\\n"
            << "     $pathtracer using 1:2 with linespoints pt 5 ps 0.8 lw 1.5 lc rgb '#d62728' notitle, \\\n"
            << "     $pathtracer using 1:2:(sprintf('%s spp', strcol(4))) with labels offset char 0,-0.9 font ',8' tc rgb '#d62728' notitle\n";

@@ -42,7 +42,7 @@ plot $pathtracer using 1:2 with linespoints pt 5 ps 0.8 lw 1.5 lc rgb '#d62728' 
      $pathtracer using 1:2:(sprintf('%s spp', strcol(4))) with labels offset char 0,-0.9 font ',8' tc rgb '#d62728' notitle, \
      $pareto using 1:2 with linespoints pt 4 ps 1.9 lw 2 dt 2 lc rgb '#1f77b4' title 'Pareto front (vct)', \
      $engine using 1:2 with points pt 7 ps 1.0 lc rgb '#1f77b4' title 'vct settings', \
-     $engine using 1:2:4 with labels left offset char 0.6,0.35 font ',8' notitle, \
+     $engine using 1:2:4 with labels left offset char 0.6,0.35 font ',8' noenhanced notitle, \
      $default using 1:2 with points pt 6 ps 2.4 lw 2 lc rgb 'black' title 'vct default', \
      noise with lines dt 3 lc rgb '#808080' title 'reference noise (est.)'
 set ytics ("1e-05" 1e-05, "2e-05" 2e-05, "5e-05" 5e-05, "0.0001" 0.0001, "0.0002" 0.0002, "0.0005" 0.0005, "0.001" 0.001, "0.002" 0.002, "0.005" 0.005, "0.01" 0.01, "0.02" 0.02, "0.05" 0.05, "0.1" 0.1, "0.2" 0.2, "0.5" 0.5, "1" 1, "2" 2, "5" 5)
@@ -52,7 +52,7 @@ plot $pathtracer using 1:3 with linespoints pt 5 ps 0.8 lw 1.5 lc rgb '#d62728' 
      $pathtracer using 1:3:(sprintf('%s spp', strcol(4))) with labels offset char 0,-0.9 font ',8' tc rgb '#d62728' notitle, \
      $paretoIndirect using 1:3 with linespoints pt 4 ps 1.9 lw 2 dt 2 lc rgb '#1f77b4' title 'Pareto front (vct)', \
      $engine using 1:3 with points pt 7 ps 1.0 lc rgb '#1f77b4' title 'vct settings', \
-     $engine using 1:3:4 with labels left offset char 0.6,0.35 font ',8' notitle, \
+     $engine using 1:3:4 with labels left offset char 0.6,0.35 font ',8' noenhanced notitle, \
      $default using 1:3 with points pt 6 ps 2.4 lw 2 lc rgb 'black' title 'vct default', \
      noise with lines dt 3 lc rgb '#808080' title 'reference noise (est.)'
 set offsets 0, 0, 0, 0
@@ -67,7 +67,7 @@ set ylabel 'RMSE of the full image vs reference (linear)'
 set title 'vct points only (zoom; full image)'
 plot $pareto using 1:2 with linespoints pt 4 ps 1.9 lw 2 dt 2 lc rgb '#1f77b4' title 'Pareto front (vct)', \
      $engine using 1:2 with points pt 7 ps 1.0 lc rgb '#1f77b4' notitle, \
-     $engine using 1:2:4 with labels left offset char 0.6,0.35 font ',8' notitle, \
+     $engine using 1:2:4 with labels left offset char 0.6,0.35 font ',8' noenhanced notitle, \
      $default using 1:2 with points pt 6 ps 2.4 lw 2 lc rgb 'black' title 'vct default', \
      $pathtracer using 1:2 with linespoints pt 5 ps 0.8 lw 1.5 lc rgb '#d62728' notitle, \
      $pathtracer using 1:2:(sprintf('%s spp', strcol(4))) with labels offset char 0,-0.9 font ',8' tc rgb '#d62728' notitle

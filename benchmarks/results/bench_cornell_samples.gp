@@ -1,0 +1,75 @@
+# Drawn by `vct bench` (vct bench benchmarks/sweeps/cornell_samples.json); run `gnuplot bench_cornell_samples.gp` in this folder to draw it again.
+set terminal pngcairo size 2100,700 enhanced font 'DejaVu Sans,10'
+set output "bench_cornell_samples.png"
+$engine << EOD
+1520 0.035062 0.032882 "samples=1"
+1738 0.0230654 0.0215687 "samples=4"
+2712 0.0117686 0.0114469 "default"
+3299 0.0324455 0.0322905 "sample_cones=set"
+EOD
+$pathtracer << EOD
+9.987 0.152846 0.152266 "1"
+40.95 0.0747809 0.0742655 "4"
+164.3 0.0376246 0.0373476 "16"
+659.2 0.0189356 0.0188115 "64"
+2796 0.0096764 0.00960391 "256"
+EOD
+$pareto << EOD
+1520 0.035062 0.032882 "samples=1"
+1738 0.0230654 0.0215687 "samples=4"
+2712 0.0117686 0.0114469 "default"
+EOD
+$paretoIndirect << EOD
+1520 0.035062 0.032882 "samples=1"
+1738 0.0230654 0.0215687 "samples=4"
+2712 0.0117686 0.0114469 "default"
+EOD
+$default << EOD
+2712 0.0117686 0.0114469 "default"
+EOD
+set xtics ("0.1" 0.1, "0.2" 0.2, "0.5" 0.5, "1" 1, "2" 2, "5" 5, "10" 10, "20" 20, "50" 50, "100" 100, "200" 200, "500" 500, "1000" 1000, "2000" 2000, "5000" 5000, "10000" 10000, "20000" 20000, "50000" 50000, "100000" 100000, "200000" 200000, "500000" 500000)
+noise = 0.00233982
+set multiplot layout 1,3 title "cornell 320x240: error against time, vct settings and the path tracer (1 bounce, reference 4096 spp), llvmpipe (LLVM 15.0.6, 256 bits), 2026-11-27" font ',12'
+set logscale xy
+set grid xtics ytics mxtics mytics lc rgb '#e0e0e0'
+set xlabel 'time (ms, log): vct full warm frame / path-tracer render, same CPU'
+set key bottom left box opaque font ',9'
+set offsets graph 0.08, graph 0.25, graph 0.1, graph 0.1
+set autoscale fix
+set ytics ("0.0001" 0.0001, "0.0002" 0.0002, "0.0005" 0.0005, "0.001" 0.001, "0.002" 0.002, "0.005" 0.005, "0.01" 0.01, "0.02" 0.02, "0.05" 0.05, "0.1" 0.1, "0.2" 0.2, "0.5" 0.5, "1" 1, "2" 2, "5" 5, "10" 10, "20" 20, "50" 50)
+set ylabel 'RMSE of the full image vs reference (linear, log)'
+set title 'full image'
+plot $pathtracer using 1:2 with linespoints pt 5 ps 0.8 lw 1.5 lc rgb '#d62728' title 'path tracer (spp)', \
+     $pathtracer using 1:2:(sprintf('%s spp', strcol(4))) with labels offset char 0,-0.9 font ',8' tc rgb '#d62728' notitle, \
+     $pareto using 1:2 with linespoints pt 4 ps 1.9 lw 2 dt 2 lc rgb '#1f77b4' title 'Pareto front (vct)', \
+     $engine using 1:2 with points pt 7 ps 1.0 lc rgb '#1f77b4' title 'vct settings', \
+     $engine using 1:2:4 with labels left offset char 0.6,0.35 font ',8' noenhanced notitle, \
+     $default using 1:2 with points pt 6 ps 2.4 lw 2 lc rgb 'black' title 'vct default', \
+     noise with lines dt 3 lc rgb '#808080' title 'reference noise (est.)'
+set ytics ("0.0001" 0.0001, "0.0002" 0.0002, "0.0005" 0.0005, "0.001" 0.001, "0.002" 0.002, "0.005" 0.005, "0.01" 0.01, "0.02" 0.02, "0.05" 0.05, "0.1" 0.1, "0.2" 0.2, "0.5" 0.5, "1" 1, "2" 2, "5" 5, "10" 10, "20" 20, "50" 50)
+set ylabel 'RMSE of the indirect part vs reference (linear, log)'
+set title 'indirect part alone (final − direct)'
+plot $pathtracer using 1:3 with linespoints pt 5 ps 0.8 lw 1.5 lc rgb '#d62728' title 'path tracer (spp)', \
+     $pathtracer using 1:3:(sprintf('%s spp', strcol(4))) with labels offset char 0,-0.9 font ',8' tc rgb '#d62728' notitle, \
+     $paretoIndirect using 1:3 with linespoints pt 4 ps 1.9 lw 2 dt 2 lc rgb '#1f77b4' title 'Pareto front (vct)', \
+     $engine using 1:3 with points pt 7 ps 1.0 lc rgb '#1f77b4' title 'vct settings', \
+     $engine using 1:3:4 with labels left offset char 0.6,0.35 font ',8' noenhanced notitle, \
+     $default using 1:3 with points pt 6 ps 2.4 lw 2 lc rgb 'black' title 'vct default', \
+     noise with lines dt 3 lc rgb '#808080' title 'reference noise (est.)'
+set offsets 0, 0, 0, 0
+unset logscale y
+set ytics auto
+set format y '%g'
+set xtics ("100" 100, "200" 200, "500" 500, "1000" 1000, "2000" 2000, "5000" 5000, "10000" 10000, "20000" 20000, "50000" 50000, "100000" 100000, "200000" 200000, "500000" 500000)
+set xrange [1168.95:5938.02]
+set yrange [0.00990512:0.0369255]
+set key top left box opaque font ',9'
+set ylabel 'RMSE of the full image vs reference (linear)'
+set title 'vct points only (zoom; full image)'
+plot $pareto using 1:2 with linespoints pt 4 ps 1.9 lw 2 dt 2 lc rgb '#1f77b4' title 'Pareto front (vct)', \
+     $engine using 1:2 with points pt 7 ps 1.0 lc rgb '#1f77b4' notitle, \
+     $engine using 1:2:4 with labels left offset char 0.6,0.35 font ',8' noenhanced notitle, \
+     $default using 1:2 with points pt 6 ps 2.4 lw 2 lc rgb 'black' title 'vct default', \
+     $pathtracer using 1:2 with linespoints pt 5 ps 0.8 lw 1.5 lc rgb '#d62728' notitle, \
+     $pathtracer using 1:2:(sprintf('%s spp', strcol(4))) with labels offset char 0,-0.9 font ',8' tc rgb '#d62728' notitle
+unset multiplot
