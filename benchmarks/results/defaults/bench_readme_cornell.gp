@@ -2,34 +2,34 @@
 set terminal pngcairo size 2100,700 enhanced font 'DejaVu Sans,10'
 set output "bench_readme_cornell.png"
 $engine << EOD
-50.35 0.0709748 0.06987 "GI off"
-1632 0.0350549 0.0328797 "default"
+39.71 0.0709748 0.06987 "GI off"
+1449 0.035062 0.032882 "default"
 EOD
 $pathtracer << EOD
-11.62 0.152846 0.152266 "1"
-23.79 0.106638 0.105955 "2"
-46.67 0.0747809 0.0742655 "4"
-92.7 0.0533364 0.0529291 "8"
-186.8 0.0376246 0.0373476 "16"
-363 0.0264832 0.0262843 "32"
-732.8 0.0189356 0.0188115 "64"
-1430 0.0134033 0.0133121 "128"
-2967 0.0096764 0.00960391 "256"
+10.37 0.152846 0.152266 "1"
+20.48 0.106638 0.105955 "2"
+42.32 0.0747809 0.0742655 "4"
+83.95 0.0533364 0.0529291 "8"
+164.3 0.0376246 0.0373476 "16"
+328.3 0.0264832 0.0262843 "32"
+657.4 0.0189356 0.0188115 "64"
+1328 0.0134033 0.0133121 "128"
+2651 0.0096764 0.00960391 "256"
 EOD
 $pareto << EOD
-50.35 0.0709748 0.06987 "GI off"
-1632 0.0350549 0.0328797 "default"
+39.71 0.0709748 0.06987 "GI off"
+1449 0.035062 0.032882 "default"
 EOD
 $paretoIndirect << EOD
-50.35 0.0709748 0.06987 "GI off"
-1632 0.0350549 0.0328797 "default"
+39.71 0.0709748 0.06987 "GI off"
+1449 0.035062 0.032882 "default"
 EOD
 $default << EOD
-1632 0.0350549 0.0328797 "default"
+1449 0.035062 0.032882 "default"
 EOD
 set xtics ("1" 1, "2" 2, "5" 5, "10" 10, "20" 20, "50" 50, "100" 100, "200" 200, "500" 500, "1000" 1000, "2000" 2000, "5000" 5000, "10000" 10000, "20000" 20000, "50000" 50000, "100000" 100000, "200000" 200000, "500000" 500000)
 noise = 0.00233982
-set multiplot layout 1,3 title "cornell 320x240: error against time, vct settings and the path tracer (1 bounce, reference 4096 spp), llvmpipe (LLVM 15.0.6, 256 bits), 2026-11-26" font ',12'
+set multiplot layout 1,3 title "cornell 320x240: error against time, vct settings and the path tracer (1 bounce, reference 4096 spp), llvmpipe (LLVM 15.0.6, 256 bits), 2026-11-27" font ',12'
 set logscale xy
 set grid xtics ytics mxtics mytics lc rgb '#e0e0e0'
 set xlabel 'time (ms, log): vct full warm frame / path-tracer render, same CPU'
@@ -61,8 +61,8 @@ unset logscale y
 set ytics auto
 set format y '%g'
 set xtics ("1" 1, "2" 2, "5" 5, "10" 10, "20" 20, "50" 50, "100" 100, "200" 200, "500" 500, "1000" 1000, "2000" 2000, "5000" 5000, "10000" 10000, "20000" 20000, "50000" 50000, "100000" 100000, "200000" 200000, "500000" 500000)
-set xrange [38.731:2937.75]
-set yrange [0.0321813:0.0738484]
+set xrange [30.5469:2608.58]
+set yrange [0.032189:0.0738478]
 set key top left box opaque font ',9'
 set ylabel 'RMSE of the full image vs reference (linear)'
 set title 'vct points only (zoom; full image)'

@@ -2,33 +2,33 @@
 set terminal pngcairo size 2100,700 enhanced font 'DejaVu Sans,10'
 set output "bench_readme_sponza.png"
 $engine << EOD
-241.9 0.0439818 0.0316567 "GI off"
-1971 0.0336315 0.0137102 "default"
+246.8 0.0439818 0.0316567 "GI off"
+1838 0.0336312 0.0137219 "default"
 EOD
 $pathtracer << EOD
-52.79 0.100813 0.078527 "1"
-104.7 0.07398 0.0559022 "2"
-212.9 0.0538738 0.0398726 "4"
-414.2 0.0381414 0.0281776 "8"
-841.3 0.0270134 0.0199552 "16"
-1636 0.0192044 0.0143156 "32"
-3314 0.0138254 0.0102089 "64"
-6182 0.0101568 0.00748851 "128"
+40.41 0.100813 0.078527 "1"
+79.51 0.07398 0.0559022 "2"
+159 0.0538738 0.0398726 "4"
+311.6 0.0381414 0.0281776 "8"
+632.8 0.0270134 0.0199552 "16"
+1204 0.0192044 0.0143156 "32"
+2445 0.0138254 0.0102089 "64"
+5548 0.0101568 0.00748851 "128"
 EOD
 $pareto << EOD
-241.9 0.0439818 0.0316567 "GI off"
-1971 0.0336315 0.0137102 "default"
+246.8 0.0439818 0.0316567 "GI off"
+1838 0.0336312 0.0137219 "default"
 EOD
 $paretoIndirect << EOD
-241.9 0.0439818 0.0316567 "GI off"
-1971 0.0336315 0.0137102 "default"
+246.8 0.0439818 0.0316567 "GI off"
+1838 0.0336312 0.0137219 "default"
 EOD
 $default << EOD
-1971 0.0336315 0.0137102 "default"
+1838 0.0336312 0.0137219 "default"
 EOD
 set xtics ("1" 1, "2" 2, "5" 5, "10" 10, "20" 20, "50" 50, "100" 100, "200" 200, "500" 500, "1000" 1000, "2000" 2000, "5000" 5000, "10000" 10000, "20000" 20000, "50000" 50000, "100000" 100000, "200000" 200000, "500000" 500000)
 noise = 0.00337035
-set multiplot layout 1,3 title "sponza 320x180: error against time, vct settings and the path tracer (1 bounce, reference 1024 spp), llvmpipe (LLVM 15.0.6, 256 bits), 2026-11-26" font ',12'
+set multiplot layout 1,3 title "sponza 320x180: error against time, vct settings and the path tracer (1 bounce, reference 1024 spp), llvmpipe (LLVM 15.0.6, 256 bits), 2026-11-27" font ',12'
 set logscale xy
 set grid xtics ytics mxtics mytics lc rgb '#e0e0e0'
 set xlabel 'time (ms, log): vct full warm frame / path-tracer render, same CPU'
@@ -60,8 +60,8 @@ unset logscale y
 set ytics auto
 set format y '%g'
 set xtics ("10" 10, "20" 20, "50" 50, "100" 100, "200" 200, "500" 500, "1000" 1000, "2000" 2000, "5000" 5000, "10000" 10000, "20000" 20000, "50000" 50000, "100000" 100000, "200000" 200000, "500000" 500000)
-set xrange [186.04:3547.11]
-set yrange [0.0328034:0.0448098]
+set xrange [189.88:3309.04]
+set yrange [0.0328031:0.0448099]
 set key top left box opaque font ',9'
 set ylabel 'RMSE of the full image vs reference (linear)'
 set title 'vct points only (zoom; full image)'

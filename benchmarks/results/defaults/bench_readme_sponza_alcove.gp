@@ -2,33 +2,33 @@
 set terminal pngcairo size 2100,700 enhanced font 'DejaVu Sans,10'
 set output "bench_readme_sponza_alcove.png"
 $engine << EOD
-212.4 0.0149057 0.00718342 "GI off"
-1830 0.014236 0.00476048 "default"
+213.3 0.0149057 0.00718342 "GI off"
+1736 0.0142355 0.0047612 "default"
 EOD
 $pathtracer << EOD
-43.56 0.0304382 0.0246553 "1"
-84.85 0.0232197 0.0182311 "2"
-170.2 0.0161894 0.0125611 "4"
-339.4 0.0118156 0.0087004 "8"
-662.3 0.00837981 0.0063605 "16"
-1350 0.00565385 0.00448905 "32"
-2718 0.00419137 0.00318578 "64"
-5307 0.00309643 0.00232286 "128"
+36.45 0.0304382 0.0246553 "1"
+70.66 0.0232197 0.0182311 "2"
+138.5 0.0161894 0.0125611 "4"
+277.2 0.0118156 0.0087004 "8"
+552.8 0.00837981 0.0063605 "16"
+1108 0.00565385 0.00448905 "32"
+2217 0.00419137 0.00318578 "64"
+4415 0.00309643 0.00232286 "128"
 EOD
 $pareto << EOD
-212.4 0.0149057 0.00718342 "GI off"
-1830 0.014236 0.00476048 "default"
+213.3 0.0149057 0.00718342 "GI off"
+1736 0.0142355 0.0047612 "default"
 EOD
 $paretoIndirect << EOD
-212.4 0.0149057 0.00718342 "GI off"
-1830 0.014236 0.00476048 "default"
+213.3 0.0149057 0.00718342 "GI off"
+1736 0.0142355 0.0047612 "default"
 EOD
 $default << EOD
-1830 0.014236 0.00476048 "default"
+1736 0.0142355 0.0047612 "default"
 EOD
 set xtics ("1" 1, "2" 2, "5" 5, "10" 10, "20" 20, "50" 50, "100" 100, "200" 200, "500" 500, "1000" 1000, "2000" 2000, "5000" 5000, "10000" 10000, "20000" 20000, "50000" 50000, "100000" 100000, "200000" 200000, "500000" 500000)
 noise = 0.0010487
-set multiplot layout 1,3 title "sponza 320x180: error against time, vct settings and the path tracer (1 bounce, reference 1024 spp), llvmpipe (LLVM 15.0.6, 256 bits), 2026-11-26" font ',12'
+set multiplot layout 1,3 title "sponza 320x180: error against time, vct settings and the path tracer (1 bounce, reference 1024 spp), llvmpipe (LLVM 15.0.6, 256 bits), 2026-11-27" font ',12'
 set logscale xy
 set grid xtics ytics mxtics mytics lc rgb '#e0e0e0'
 set xlabel 'time (ms, log): vct full warm frame / path-tracer render, same CPU'
@@ -60,8 +60,8 @@ unset logscale y
 set ytics auto
 set format y '%g'
 set xtics ("10" 10, "20" 20, "50" 50, "100" 100, "200" 200, "500" 500, "1000" 1000, "2000" 2000, "5000" 5000, "10000" 10000, "20000" 20000, "50000" 50000, "100000" 100000, "200000" 200000, "500000" 500000)
-set xrange [163.354:3294.67]
-set yrange [0.0141764:0.0149653]
+set xrange [164.051:3124.79]
+set yrange [0.0141759:0.0149653]
 set key top left box opaque font ',9'
 set ylabel 'RMSE of the full image vs reference (linear)'
 set title 'vct points only (zoom; full image)'

@@ -2,33 +2,33 @@
 set terminal pngcairo size 2100,700 enhanced font 'DejaVu Sans,10'
 set output "bench_readme_sponza_alternate.png"
 $engine << EOD
-229.3 0.0382067 0.0331504 "GI off"
-2183 0.0245024 0.0154663 "default"
+245.7 0.0382067 0.0331504 "GI off"
+1809 0.0244382 0.0154401 "default"
 EOD
 $pathtracer << EOD
-58.22 0.10519 0.078003 "1"
-120.6 0.0759991 0.0551047 "2"
-240.7 0.0543785 0.0387149 "4"
-517.1 0.0391751 0.0275751 "8"
-955.8 0.0278626 0.0195666 "16"
-1943 0.0197724 0.0140758 "32"
-4091 0.0142997 0.0101254 "64"
-6966 0.0104086 0.00738225 "128"
+51.11 0.10519 0.078003 "1"
+99 0.0759991 0.0551047 "2"
+202.6 0.0543785 0.0387149 "4"
+400.3 0.0391751 0.0275751 "8"
+812.2 0.0278626 0.0195666 "16"
+1637 0.0197724 0.0140758 "32"
+3250 0.0142997 0.0101254 "64"
+6500 0.0104086 0.00738225 "128"
 EOD
 $pareto << EOD
-229.3 0.0382067 0.0331504 "GI off"
-2183 0.0245024 0.0154663 "default"
+245.7 0.0382067 0.0331504 "GI off"
+1809 0.0244382 0.0154401 "default"
 EOD
 $paretoIndirect << EOD
-229.3 0.0382067 0.0331504 "GI off"
-2183 0.0245024 0.0154663 "default"
+245.7 0.0382067 0.0331504 "GI off"
+1809 0.0244382 0.0154401 "default"
 EOD
 $default << EOD
-2183 0.0245024 0.0154663 "default"
+1809 0.0244382 0.0154401 "default"
 EOD
 set xtics ("1" 1, "2" 2, "5" 5, "10" 10, "20" 20, "50" 50, "100" 100, "200" 200, "500" 500, "1000" 1000, "2000" 2000, "5000" 5000, "10000" 10000, "20000" 20000, "50000" 50000, "100000" 100000, "200000" 200000, "500000" 500000)
 noise = 0.00347134
-set multiplot layout 1,3 title "sponza 320x180: error against time, vct settings and the path tracer (1 bounce, reference 1024 spp), llvmpipe (LLVM 15.0.6, 256 bits), 2026-11-26" font ',12'
+set multiplot layout 1,3 title "sponza 320x180: error against time, vct settings and the path tracer (1 bounce, reference 1024 spp), llvmpipe (LLVM 15.0.6, 256 bits), 2026-11-27" font ',12'
 set logscale xy
 set grid xtics ytics mxtics mytics lc rgb '#e0e0e0'
 set xlabel 'time (ms, log): vct full warm frame / path-tracer render, same CPU'
@@ -60,8 +60,8 @@ unset logscale y
 set ytics auto
 set format y '%g'
 set xtics ("10" 10, "20" 20, "50" 50, "100" 100, "200" 200, "500" 500, "1000" 1000, "2000" 2000, "5000" 5000, "10000" 10000, "20000" 20000, "50000" 50000, "100000" 100000, "200000" 200000, "500000" 500000)
-set xrange [176.386:3928.66]
-set yrange [0.023406:0.039303]
+set xrange [189.015:3256.88]
+set yrange [0.0233367:0.0393082]
 set key top left box opaque font ',9'
 set ylabel 'RMSE of the full image vs reference (linear)'
 set title 'vct points only (zoom; full image)'

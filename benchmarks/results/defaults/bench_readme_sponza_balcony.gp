@@ -2,33 +2,33 @@
 set terminal pngcairo size 2100,700 enhanced font 'DejaVu Sans,10'
 set output "bench_readme_sponza_balcony.png"
 $engine << EOD
-233.7 0.00273708 0.00273708 "GI off"
-1912 0.00181121 0.00181121 "default"
+209.7 0.00273708 0.00273708 "GI off"
+1685 0.00181081 0.00181081 "default"
 EOD
 $pathtracer << EOD
-34.92 0.0177069 0.0177069 "1"
-70.1 0.0133459 0.0133459 "2"
-155.6 0.00957402 0.00957402 "4"
-273.1 0.00682156 0.00682156 "8"
-520.6 0.00490017 0.00490017 "16"
-1053 0.00348164 0.00348164 "32"
-2258 0.00249175 0.00249175 "64"
-4592 0.00183139 0.00183139 "128"
+37.11 0.0177069 0.0177069 "1"
+71.09 0.0133459 0.0133459 "2"
+141.3 0.00957402 0.00957402 "4"
+291.8 0.00682156 0.00682156 "8"
+580.8 0.00490017 0.00490017 "16"
+1179 0.00348164 0.00348164 "32"
+2126 0.00249175 0.00249175 "64"
+4117 0.00183139 0.00183139 "128"
 EOD
 $pareto << EOD
-233.7 0.00273708 0.00273708 "GI off"
-1912 0.00181121 0.00181121 "default"
+209.7 0.00273708 0.00273708 "GI off"
+1685 0.00181081 0.00181081 "default"
 EOD
 $paretoIndirect << EOD
-233.7 0.00273708 0.00273708 "GI off"
-1912 0.00181121 0.00181121 "default"
+209.7 0.00273708 0.00273708 "GI off"
+1685 0.00181081 0.00181081 "default"
 EOD
 $default << EOD
-1912 0.00181121 0.00181121 "default"
+1685 0.00181081 0.00181081 "default"
 EOD
 set xtics ("1" 1, "2" 2, "5" 5, "10" 10, "20" 20, "50" 50, "100" 100, "200" 200, "500" 500, "1000" 1000, "2000" 2000, "5000" 5000, "10000" 10000, "20000" 20000, "50000" 50000, "100000" 100000, "200000" 200000, "500000" 500000)
 noise = 0.000609846
-set multiplot layout 1,3 title "sponza 320x180: error against time, vct settings and the path tracer (1 bounce, reference 1024 spp), llvmpipe (LLVM 15.0.6, 256 bits), 2026-11-26" font ',12'
+set multiplot layout 1,3 title "sponza 320x180: error against time, vct settings and the path tracer (1 bounce, reference 1024 spp), llvmpipe (LLVM 15.0.6, 256 bits), 2026-11-27" font ',12'
 set logscale xy
 set grid xtics ytics mxtics mytics lc rgb '#e0e0e0'
 set xlabel 'time (ms, log): vct full warm frame / path-tracer render, same CPU'
@@ -60,8 +60,8 @@ unset logscale y
 set ytics auto
 set format y '%g'
 set xtics ("10" 10, "20" 20, "50" 50, "100" 100, "200" 200, "500" 500, "1000" 1000, "2000" 2000, "5000" 5000, "10000" 10000, "20000" 20000, "50000" 50000, "100000" 100000, "200000" 200000, "500000" 500000)
-set xrange [179.739:3441.48]
-set yrange [0.00173714:0.00281115]
+set xrange [161.315:3032.78]
+set yrange [0.00173671:0.00281118]
 set key top left box opaque font ',9'
 set ylabel 'RMSE of the full image vs reference (linear)'
 set title 'vct points only (zoom; full image)'
