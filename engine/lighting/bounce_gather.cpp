@@ -26,11 +26,7 @@ void BounceGather::run(const Octree& octree, RadianceVolume& volume, RadianceFil
     glCopyNamedBufferSubData(volume.cellRadiance.id(), base_.id(), 0, 0, GLsizeiptr(vec4s));
     glCopyNamedBufferSubData(volume.cellExitShares.id(), base_.id(), 0, GLintptr(vec4s), GLsizeiptr(2 * vec4s));
     constexpr GLbitfield kBarrier = GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT;
-    // Voxels gather with the cone set even where pixels trace narrow cones (`--cone-rays`): a
-    // bounce carries a fraction of the light, and narrow cones at every voxel would multiply the
-    // cost of a pass that already costs more than a frame.
-    ConeSettings bounceCones = cones;
-    bounceCones.rays = 0;
+    const ConeSettings bounceCones = voxelGatherCones(cones);
     for (int bounce = 2; bounce <= bounces; ++bounce) {
         clearListCounts(volume, gl::BOUNCE_LIST_COUNT_SLOT, gl::BOUNCE_LIST_COUNT_SLOT + 1);
         // First children (one per leaf node), then their siblings (one per cell), which read what

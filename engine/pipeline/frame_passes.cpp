@@ -17,6 +17,7 @@ const char* inputName(Input input) {
         case Input::ShadowSettings: return "shadow settings";
         case Input::PhotonSettings: return "photon settings";
         case Input::ConeSettings: return "cone settings";
+        case Input::PixelCones: return "pixel cones";
         case Input::BounceSettings: return "bounce settings";
         case Input::GiResolution: return "GI resolution";
         case Input::GiFilter: return "GI filter";
@@ -240,13 +241,13 @@ const PassTable kFramePasses = {{
                           v.sample);
      }},
     {Pass::ConeTrace, "cone_trace", Stage::Camera,
-     {I::ConeSettings, I::GiResolution, I::GiFilter},
+     {I::ConeSettings, I::PixelCones, I::GiResolution, I::GiFilter},
      {R::GBuffer, R::CellValues, R::CellRadiance, R::RadianceBricks, R::BouncedRadiance}, {R::IndirectIrradiance},
      unlessConeTrace,
      "cone_trace.comp, indirect_filter.comp, cone_upsample.comp",
      traceCones},
     {Pass::VoxelView, "voxel_view", Stage::Camera,
-     {I::Camera, I::OutputSize, I::ViewSettings, I::ConeSettings},
+     {I::Camera, I::OutputSize, I::ViewSettings, I::ConeSettings, I::PixelCones},
      {R::CellValues, R::GeometryBricks, R::CellRadiance, R::RadianceBricks, R::BouncedRadiance},
      {R::DebugImage},
      unlessVoxelView,

@@ -54,7 +54,8 @@ enum class Input {
     VoxelSettings,   // voxel levels
     ShadowSettings,  // light-view resolution, PCF radius
     PhotonSettings,  // photons on/off
-    ConeSettings,    // cone set, aperture, step, offset, lift, bricks on/off
+    ConeSettings,    // cone set, aperture, step, offset, lift, bricks on/off (voxelGatherCones)
+    PixelCones,      // what only the pixels trace: narrow cones, narrow cones in later samples
     BounceSettings,  // the number of bounces
     GiResolution,    // cones at every pixel or one per 2×2 block
     GiFilter,        // the width of the cones' edge-aware filter

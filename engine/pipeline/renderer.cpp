@@ -40,7 +40,8 @@ void Renderer::setSettings(const RenderSettings& s) {
         bump(Input::ShadowSettings);
     if (s.photons != old.photons) bump(Input::PhotonSettings);
     if (s.bounces != old.bounces) bump(Input::BounceSettings);
-    if (s.cones != old.cones || s.bricks != old.bricks) bump(Input::ConeSettings);
+    if (voxelGatherCones(s.cones) != voxelGatherCones(old.cones) || s.bricks != old.bricks) bump(Input::ConeSettings);
+    if (s.cones != old.cones) bump(Input::PixelCones);
     if (s.giResolution != old.giResolution) bump(Input::GiResolution);
     if (s.giFilter != old.giFilter) bump(Input::GiFilter);
     if (s.display != old.display || s.gi != old.gi) bump(Input::DisplaySettings);

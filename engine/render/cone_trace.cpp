@@ -146,6 +146,12 @@ SampleCones conesForSample(const ConeSettings& frame, int sample) {
     return s;
 }
 
+ConeSettings voxelGatherCones(ConeSettings settings) {
+    settings.rays = 0;
+    settings.narrowConesAfterFirstSample = ConeSettings{}.narrowConesAfterFirstSample;
+    return settings;
+}
+
 void ConeTrace::render(const GBuffer& gbuffer, const Octree& octree, const RadianceVolume& radiance,
                        const ConeSettings& frame, GiResolution resolution, int sample, float filterVoxels) {
     const SampleCones sampleCones = conesForSample(frame, sample);

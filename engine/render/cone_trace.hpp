@@ -72,6 +72,12 @@ struct SampleCones {
 // weight 1/N. Explicit narrow cones (`--cone-rays`) trace as asked at every sample.
 SampleCones conesForSample(const ConeSettings& frame, int sample);
 
+// The cones that gathers at the voxels (further bounces) trace: the cone set of `settings`, with
+// its aperture, step, offsets and diagnostic cone. Narrow cones (`--cone-rays`) and what the later
+// pixel samples trace are the pixels' alone: a gather of narrow cones at every voxel would multiply
+// the cost of a pass that already costs more than a frame.
+ConeSettings voxelGatherCones(ConeSettings settings);
+
 // How many pixels one trace of the cone set serves: each pixel its own, or one pixel of each 2×2
 // (half) or 4×4 (quarter) block, the others taking theirs from the traced pixels that share their
 // surface (shaders/cone_upsample.comp; a pixel that shares its surface with none traces its own).
