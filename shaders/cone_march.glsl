@@ -402,11 +402,12 @@ vec2 narrowConeShift(vec3 origin, ivec2 stratum) {
 
 // Narrow cones instead of the cone set (`--cone-rays`, and the later samples of an accumulated
 // frame): uRayCount cones, each of weight π/N, whose axes sample the cosine-weighted hemisphere
-// (sin²θ and azimuth uniform, narrow_cone_directions.glsl) shifted by `shift` (narrowConeShift). A cone a few
-// voxels wide keeps its samples on fine levels, where a sample's opacity and light are the
-// geometry's own, so occlusion and light arrive from where the path tracer finds them; the noise
-// of N directions per pixel is what the upsampling and the edge-aware filter average out across
-// the surface. The share of a cone behind the triangle's plane is blocked by it, as in the cone set.
+// (sin²θ and azimuth uniform, narrow_cone_directions.glsl) shifted by `shift` (narrowConeShift).
+// A cone a few voxels wide keeps its samples on fine levels, where a sample's opacity and light
+// are the geometry's own, so occlusion and light arrive from where the path tracer finds them; the
+// noise of N directions per pixel is what the upsampling, the edge-aware filter and the samples'
+// average remove. The share of a cone behind the triangle's plane is blocked by it, as in the
+// cone set.
 vec4 gatherNarrowCones(vec3 origin, vec3 normal, vec3 surfaceNormal, vec2 shift) {
     vec3 tangent, bitangent;
     orthonormalBasis(normal, tangent, bitangent);

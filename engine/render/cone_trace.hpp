@@ -53,8 +53,8 @@ struct ConeSettings {
 // converges to its bias; narrow cones err much less and spread the rest as noise, which
 // averaging removes. One cone per traced pixel and sample: over N samples a block of pixels has
 // traced N directions, stratified (SampleCones::raySequence), for less than the cone set's time
-// per sample. A step of a whole cone diameter (the set's default is half) measured as close to
-// the path tracer in about 60 % of the time (docs/benchmark.md, "Narrow cones").
+// per sample. A step of a whole cone diameter (the set's default is half): for narrow cones as close
+// to the path tracer as half a diameter, in less time (docs/benchmark.md, "Narrow cones").
 constexpr int kNarrowConesPerLaterSample = 1;
 constexpr float kLaterSampleNarrowConeStep = 1.0f;
 
