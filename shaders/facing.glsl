@@ -7,6 +7,12 @@
 // Requires cell_radiance.glsl; `cell` indexes the cell level.
 float exitShare(uint cell, int i) { return cellExitShares[2u * cell + uint(i >> 2)][i & 3]; }
 
+// All six shares of `cell` in pool-direction order, from two reads of the buffer instead of six.
+void exitShares(uint cell, out float shares[6]) {
+    const vec4 xy = cellExitShares[2u * cell], z = cellExitShares[2u * cell + 1u];
+    shares = float[6](xy.x, xy.y, xy.z, xy.w, z.x, z.y);
+}
+
 // Stores the six shares of `cell`: towards +x −x +y −y (`xy`), +z −z (`z`), as exitShare reads them.
 void storeExitShares(uint cell, vec4 xy, vec2 z) {
     cellExitShares[2u * cell] = xy;
