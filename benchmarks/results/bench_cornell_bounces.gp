@@ -2,29 +2,29 @@
 set terminal pngcairo size 2100,700 enhanced font 'DejaVu Sans,10'
 set output "bench_cornell_bounces.png"
 $engine << EOD
-1830 0.0327495 0.0304686 "default"
-4076 0.0361157 0.0338705 "bounces=2"
-8854 0.039952 0.0378908 "bounces=4"
+1464 0.035062 0.032882 "default"
+3225 0.0379515 0.0357827 "bounces=2"
+6720 0.0420865 0.0400957 "bounces=4"
 EOD
 $pathtracer << EOD
-10.31 0.152846 0.152266 "1"
-41.7 0.0747809 0.0742655 "4"
-166.6 0.0376246 0.0373476 "16"
-667.6 0.0189356 0.0188115 "64"
-2697 0.0096764 0.00960391 "256"
+11.89 0.152846 0.152266 "1"
+41.38 0.0747809 0.0742655 "4"
+164.3 0.0376246 0.0373476 "16"
+687.2 0.0189356 0.0188115 "64"
+2686 0.0096764 0.00960391 "256"
 EOD
 $pareto << EOD
-1830 0.0327495 0.0304686 "default"
+1464 0.035062 0.032882 "default"
 EOD
 $paretoIndirect << EOD
-1830 0.0327495 0.0304686 "default"
+1464 0.035062 0.032882 "default"
 EOD
 $default << EOD
-1830 0.0327495 0.0304686 "default"
+1464 0.035062 0.032882 "default"
 EOD
 set xtics ("1" 1, "2" 2, "5" 5, "10" 10, "20" 20, "50" 50, "100" 100, "200" 200, "500" 500, "1000" 1000, "2000" 2000, "5000" 5000, "10000" 10000, "20000" 20000, "50000" 50000, "100000" 100000, "200000" 200000, "500000" 500000)
 noise = 0.00233982
-set multiplot layout 1,3 title "cornell 320x240: error against time, vct settings and the path tracer (1 bounce, reference 4096 spp), llvmpipe (LLVM 15.0.6, 256 bits), 2026-11-25" font ',12'
+set multiplot layout 1,3 title "cornell 320x240: error against time, vct settings and the path tracer (1 bounce, reference 4096 spp), llvmpipe (LLVM 15.0.6, 256 bits), 2026-11-27" font ',12'
 set logscale xy
 set grid xtics ytics mxtics mytics lc rgb '#e0e0e0'
 set xlabel 'time (ms, log): vct full warm frame / path-tracer render, same CPU'
@@ -56,8 +56,8 @@ unset logscale y
 set ytics auto
 set format y '%g'
 set xtics ("100" 100, "200" 200, "500" 500, "1000" 1000, "2000" 2000, "5000" 5000, "10000" 10000, "20000" 20000, "50000" 50000, "100000" 100000, "200000" 200000, "500000" 500000)
-set xrange [1407.61:15936.5]
-set yrange [0.0321733:0.0405282]
+set xrange [1126.24:12096.1]
+set yrange [0.0345:0.0426485]
 set key top left box opaque font ',9'
 set ylabel 'RMSE of the full image vs reference (linear)'
 set title 'vct points only (zoom; full image)'

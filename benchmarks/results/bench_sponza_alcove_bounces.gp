@@ -2,27 +2,27 @@
 set terminal pngcairo size 2100,700 enhanced font 'DejaVu Sans,10'
 set output "bench_sponza_alcove_bounces.png"
 $engine << EOD
-2090 0.0151285 0.00535438 "default"
-1.263e+04 0.0153093 0.00566616 "bounces=4"
+1861 0.014394 0.00483458 "default"
+1.111e+04 0.0145932 0.00519328 "bounces=4"
 EOD
 $pathtracer << EOD
-35.49 0.0305094 0.0246569 "1"
-137.9 0.0162541 0.012598 "4"
-539.1 0.0084139 0.00641549 "16"
-2180 0.00424466 0.00327996 "64"
+45.33 0.0305094 0.0246569 "1"
+175.7 0.0162541 0.012598 "4"
+698.6 0.0084139 0.00641549 "16"
+2786 0.00424466 0.00327996 "64"
 EOD
 $pareto << EOD
-2090 0.0151285 0.00535438 "default"
+1861 0.014394 0.00483458 "default"
 EOD
 $paretoIndirect << EOD
-2090 0.0151285 0.00535438 "default"
+1861 0.014394 0.00483458 "default"
 EOD
 $default << EOD
-2090 0.0151285 0.00535438 "default"
+1861 0.014394 0.00483458 "default"
 EOD
 set xtics ("1" 1, "2" 2, "5" 5, "10" 10, "20" 20, "50" 50, "100" 100, "200" 200, "500" 500, "1000" 1000, "2000" 2000, "5000" 5000, "10000" 10000, "20000" 20000, "50000" 50000, "100000" 100000, "200000" 200000, "500000" 500000, "1e+06" 1e+06, "2e+06" 2e+06, "5e+06" 5e+06)
 noise = 0.00148557
-set multiplot layout 1,3 title "sponza 320x180: error against time, vct settings and the path tracer (1 bounce, reference 512 spp), llvmpipe (LLVM 15.0.6, 256 bits), 2026-11-25" font ',12'
+set multiplot layout 1,3 title "sponza 320x180: error against time, vct settings and the path tracer (1 bounce, reference 512 spp), llvmpipe (LLVM 15.0.6, 256 bits), 2026-11-27" font ',12'
 set logscale xy
 set grid xtics ytics mxtics mytics lc rgb '#e0e0e0'
 set xlabel 'time (ms, log): vct full warm frame / path-tracer render, same CPU'
@@ -54,8 +54,8 @@ unset logscale y
 set ytics auto
 set format y '%g'
 set xtics ("100" 100, "200" 200, "500" 500, "1000" 1000, "2000" 2000, "5000" 5000, "10000" 10000, "20000" 20000, "50000" 50000, "100000" 100000, "200000" 200000, "500000" 500000, "1e+06" 1e+06, "2e+06" 2e+06, "5e+06" 5e+06)
-set xrange [1607.65:22726.6]
-set yrange [0.0150673:0.0153705]
+set xrange [1431.69:19997.8]
+set yrange [0.0143357:0.0146516]
 set key top left box opaque font ',9'
 set ylabel 'RMSE of the full image vs reference (linear)'
 set title 'vct points only (zoom; full image)'

@@ -2,27 +2,27 @@
 set terminal pngcairo size 2100,700 enhanced font 'DejaVu Sans,10'
 set output "bench_sponza_alternate_bounces.png"
 $engine << EOD
-2135 0.0270907 0.0156234 "default"
-1.239e+04 0.0276454 0.0163637 "bounces=4"
+1761 0.0246561 0.0156318 "default"
+1.052e+04 0.0252285 0.0164324 "bounces=4"
 EOD
 $pathtracer << EOD
-43.11 0.105219 0.0780602 "1"
-164 0.0544929 0.0388028 "4"
-645.7 0.0280296 0.0197261 "16"
-2534 0.0147533 0.0104631 "64"
+53.77 0.105219 0.0780602 "1"
+205.3 0.0544929 0.0388028 "4"
+870.4 0.0280296 0.0197261 "16"
+3500 0.0147533 0.0104631 "64"
 EOD
 $pareto << EOD
-2135 0.0270907 0.0156234 "default"
+1761 0.0246561 0.0156318 "default"
 EOD
 $paretoIndirect << EOD
-2135 0.0270907 0.0156234 "default"
+1761 0.0246561 0.0156318 "default"
 EOD
 $default << EOD
-2135 0.0270907 0.0156234 "default"
+1761 0.0246561 0.0156318 "default"
 EOD
 set xtics ("1" 1, "2" 2, "5" 5, "10" 10, "20" 20, "50" 50, "100" 100, "200" 200, "500" 500, "1000" 1000, "2000" 2000, "5000" 5000, "10000" 10000, "20000" 20000, "50000" 50000, "100000" 100000, "200000" 200000, "500000" 500000, "1e+06" 1e+06, "2e+06" 2e+06, "5e+06" 5e+06)
 noise = 0.00490899
-set multiplot layout 1,3 title "sponza 320x180: error against time, vct settings and the path tracer (1 bounce, reference 512 spp), llvmpipe (LLVM 15.0.6, 256 bits), 2026-11-25" font ',12'
+set multiplot layout 1,3 title "sponza 320x180: error against time, vct settings and the path tracer (1 bounce, reference 512 spp), llvmpipe (LLVM 15.0.6, 256 bits), 2026-11-27" font ',12'
 set logscale xy
 set grid xtics ytics mxtics mytics lc rgb '#e0e0e0'
 set xlabel 'time (ms, log): vct full warm frame / path-tracer render, same CPU'
@@ -54,8 +54,8 @@ unset logscale y
 set ytics auto
 set format y '%g'
 set xtics ("100" 100, "200" 200, "500" 500, "1000" 1000, "2000" 2000, "5000" 5000, "10000" 10000, "20000" 20000, "50000" 50000, "100000" 100000, "200000" 200000, "500000" 500000, "1e+06" 1e+06, "2e+06" 2e+06, "5e+06" 5e+06)
-set xrange [1642.61:22308.3]
-set yrange [0.0269801:0.0277559]
+set xrange [1354.65:18936.5]
+set yrange [0.0245552:0.0253294]
 set key top left box opaque font ',9'
 set ylabel 'RMSE of the full image vs reference (linear)'
 set title 'vct points only (zoom; full image)'

@@ -2,27 +2,27 @@
 set terminal pngcairo size 2100,700 enhanced font 'DejaVu Sans,10'
 set output "bench_sponza_balcony_bounces.png"
 $engine << EOD
-2079 0.00167048 0.00167048 "default"
-1.258e+04 0.00200739 0.00200739 "bounces=4"
+1778 0.00190334 0.00190334 "default"
+1.077e+04 0.00213046 0.00213046 "bounces=4"
 EOD
 $pathtracer << EOD
-31.5 0.0177136 0.0177136 "1"
-119 0.00959273 0.00959273 "4"
-460.8 0.00491866 0.00491866 "16"
-1865 0.00255908 0.00255908 "64"
+36.4 0.0177136 0.0177136 "1"
+145.3 0.00959273 0.00959273 "4"
+572.1 0.00491866 0.00491866 "16"
+2320 0.00255908 0.00255908 "64"
 EOD
 $pareto << EOD
-2079 0.00167048 0.00167048 "default"
+1778 0.00190334 0.00190334 "default"
 EOD
 $paretoIndirect << EOD
-2079 0.00167048 0.00167048 "default"
+1778 0.00190334 0.00190334 "default"
 EOD
 $default << EOD
-2079 0.00167048 0.00167048 "default"
+1778 0.00190334 0.00190334 "default"
 EOD
 set xtics ("1" 1, "2" 2, "5" 5, "10" 10, "20" 20, "50" 50, "100" 100, "200" 200, "500" 500, "1000" 1000, "2000" 2000, "5000" 5000, "10000" 10000, "20000" 20000, "50000" 50000, "100000" 100000, "200000" 200000, "500000" 500000, "1e+06" 1e+06, "2e+06" 2e+06, "5e+06" 5e+06)
 noise = 0.000861221
-set multiplot layout 1,3 title "sponza 320x180: error against time, vct settings and the path tracer (1 bounce, reference 512 spp), llvmpipe (LLVM 15.0.6, 256 bits), 2026-11-25" font ',12'
+set multiplot layout 1,3 title "sponza 320x180: error against time, vct settings and the path tracer (1 bounce, reference 512 spp), llvmpipe (LLVM 15.0.6, 256 bits), 2026-11-27" font ',12'
 set logscale xy
 set grid xtics ytics mxtics mytics lc rgb '#e0e0e0'
 set xlabel 'time (ms, log): vct full warm frame / path-tracer render, same CPU'
@@ -54,8 +54,8 @@ unset logscale y
 set ytics auto
 set format y '%g'
 set xtics ("100" 100, "200" 200, "500" 500, "1000" 1000, "2000" 2000, "5000" 5000, "10000" 10000, "20000" 20000, "50000" 50000, "100000" 100000, "200000" 200000, "500000" 500000, "1e+06" 1e+06, "2e+06" 2e+06, "5e+06" 5e+06)
-set xrange [1599.29:22641.8]
-set yrange [0.00164353:0.00203434]
+set xrange [1368.01:19380.2]
+set yrange [0.00188517:0.00214863]
 set key top left box opaque font ',9'
 set ylabel 'RMSE of the full image vs reference (linear)'
 set title 'vct points only (zoom; full image)'

@@ -2,27 +2,27 @@
 set terminal pngcairo size 2100,700 enhanced font 'DejaVu Sans,10'
 set output "bench_sponza_main_bounces.png"
 $engine << EOD
-2003 0.0344866 0.0141257 "default"
-1.25e+04 0.0348344 0.0149647 "bounces=4"
+1845 0.0337398 0.0139178 "default"
+1.121e+04 0.0340415 0.0147288 "bounces=4"
 EOD
 $pathtracer << EOD
-40.98 0.100829 0.0785631 "1"
-163.5 0.0539345 0.0399594 "4"
-659.9 0.0272064 0.0201032 "16"
-2658 0.0141749 0.0104963 "64"
+44.23 0.100829 0.0785631 "1"
+176.5 0.0539345 0.0399594 "4"
+716.6 0.0272064 0.0201032 "16"
+2846 0.0141749 0.0104963 "64"
 EOD
 $pareto << EOD
-2003 0.0344866 0.0141257 "default"
+1845 0.0337398 0.0139178 "default"
 EOD
 $paretoIndirect << EOD
-2003 0.0344866 0.0141257 "default"
+1845 0.0337398 0.0139178 "default"
 EOD
 $default << EOD
-2003 0.0344866 0.0141257 "default"
+1845 0.0337398 0.0139178 "default"
 EOD
 set xtics ("1" 1, "2" 2, "5" 5, "10" 10, "20" 20, "50" 50, "100" 100, "200" 200, "500" 500, "1000" 1000, "2000" 2000, "5000" 5000, "10000" 10000, "20000" 20000, "50000" 50000, "100000" 100000, "200000" 200000, "500000" 500000, "1e+06" 1e+06, "2e+06" 2e+06, "5e+06" 5e+06)
 noise = 0.00476674
-set multiplot layout 1,3 title "sponza 320x180: error against time, vct settings and the path tracer (1 bounce, reference 512 spp), llvmpipe (LLVM 15.0.6, 256 bits), 2026-11-25" font ',12'
+set multiplot layout 1,3 title "sponza 320x180: error against time, vct settings and the path tracer (1 bounce, reference 512 spp), llvmpipe (LLVM 15.0.6, 256 bits), 2026-11-27" font ',12'
 set logscale xy
 set grid xtics ytics mxtics mytics lc rgb '#e0e0e0'
 set xlabel 'time (ms, log): vct full warm frame / path-tracer render, same CPU'
@@ -54,8 +54,8 @@ unset logscale y
 set ytics auto
 set format y '%g'
 set xtics ("100" 100, "200" 200, "500" 500, "1000" 1000, "2000" 2000, "5000" 5000, "10000" 10000, "20000" 20000, "50000" 50000, "100000" 100000, "200000" 200000, "500000" 500000, "1e+06" 1e+06, "2e+06" 2e+06, "5e+06" 5e+06)
-set xrange [1541.02:22498.6]
-set yrange [0.0343472:0.0349737]
+set xrange [1418.87:20176.1]
+set yrange [0.0336037:0.0341777]
 set key top left box opaque font ',9'
 set ylabel 'RMSE of the full image vs reference (linear)'
 set title 'vct points only (zoom; full image)'
