@@ -93,7 +93,8 @@ void main() {
     vec3 centre = vec3(unpackCell(nodeCoord[node])) + 0.5;
     for (int side = 0; side < 2; ++side) {
         vec3 n = side == 0 ? normal : -normal;
-        irradiance[side] = gatherIrradiance(centre + n * uConeOffset, n, n).rgb;
+        // The cone set (voxelGatherCones): no narrow cones to shift.
+        irradiance[side] = gatherIrradiance(centre + n * uConeOffset, n, n, vec2(0.0)).rgb;
     }
 #endif
 #ifdef GATHER_FIRST_CHILDREN

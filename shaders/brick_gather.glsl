@@ -14,7 +14,7 @@ void nodesAround(uint node, out uint around[27]) {
     ivec3 coord = ivec3(unpackCell(nodeCoord[node]));
     int size = 1 << uLevel;
     for (int o = 0; o < 27; ++o) {
-        ivec3 target = coord + ivec3(o % 3, (o / 3) % 3, o / 9) - 1;
+        ivec3 target = coord + blockCoord3(o) - 1;
         around[o] = NONE;
         if (o == 13) around[o] = node;
         else if (all(greaterThanEqual(target, ivec3(0))) && all(lessThan(target, ivec3(size))))
@@ -26,7 +26,7 @@ void nodesAround(uint node, out uint around[27]) {
 // for child slot s ∈ {−1,0,1,2}³ relative to the node's own children; NONE where there is none.
 void childrenAround(const uint around[27], out uint children[64]) {
     for (int o = 0; o < 27; ++o) {
-        ivec3 offset = ivec3(o % 3, (o / 3) % 3, o / 9) - 1;
+        ivec3 offset = blockCoord3(o) - 1;
         for (uint slot = 0u; slot < 8u; ++slot) {
             ivec3 s = 2 * offset + ivec3(slot & 1u, (slot >> 1) & 1u, (slot >> 2) & 1u);
             if (any(lessThan(s, ivec3(-1))) || any(greaterThan(s, ivec3(2)))) continue;

@@ -22,7 +22,7 @@ void main() {
     // The 3×3×3 block of same-level nodes around this one (index (o + 1) · (1, 3, 9)).
     uint around[27];
     for (int o = 0; o < 27; ++o) {
-        ivec3 offset = ivec3(o % 3, (o / 3) % 3, o / 9) - 1;
+        ivec3 offset = blockCoord3(o) - 1;
         ivec3 target = coord + offset;
         uint found = NONE;
         if (offset == ivec3(0)) found = node;

@@ -69,7 +69,7 @@ void main() {
                 // The child slabs' transmittance at the 27 child samples around 2Q, index (d + 1) · (1, 3, 9).
                 vec3 plus[27], minus[27];
                 for (int o = 0; o < 27; ++o) {
-                    ivec3 d = ivec3(o % 3, (o / 3) % 3, o / 9) - 1;
+                    ivec3 d = blockCoord3(o) - 1;
                     uint child;
                     ivec3 local;
                     plus[o] = vec3(1.0);

@@ -21,7 +21,7 @@ void main() {
     uint present = nodesPresent(around);
     ivec3 origin = brickOrigin(node);
     for (int s = 0; s < 27; ++s) {
-        ivec3 q = ivec3(s % 3, (s / 3) % 3, s / 9);
+        ivec3 q = blockCoord3(s);
         uint owner;
         ivec3 ownerSample;
         if (!sampleFromOwner(around, present, q, owner, ownerSample)) continue;

@@ -461,9 +461,3 @@ vec4 gatherIrradiance(vec3 origin, vec3 normal, vec3 surfaceNormal, vec2 narrowS
     }
     return gathered;
 }
-
-// The same with narrow cones whose directions each apex draws (the bounce pass, which traces the
-// cone set).
-vec4 gatherIrradiance(vec3 origin, vec3 normal, vec3 surfaceNormal) {
-    return gatherIrradiance(origin, normal, surfaceNormal, hashToUnitSquare(origin));
-}

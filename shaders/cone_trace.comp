@@ -16,7 +16,6 @@ layout(binding = TEXTURE_GBUFFER_NORMAL) uniform sampler2D uNormal;
 layout(binding = TEXTURE_GBUFFER_POSITION) uniform sampler2D uPosition;
 layout(r32ui, binding = IMAGE_TRACED_PIXEL) uniform writeonly uimage2D uTracedPixel;
 
-uniform int uDownscale;
 uniform int uRotation;
 
 const ivec2 kBlockOrder[4] = ivec2[](ivec2(0, 0), ivec2(1, 1), ivec2(1, 0), ivec2(0, 1));
@@ -56,6 +55,6 @@ void main() {
             count64(CONE_COUNTER_SKY_PIXELS, 1u);
         return;
     }
-    storeTraced(cell, tracePixel(pixel, cell, position.xyz, normalize(texelFetch(uNormal, pixel, 0).xyz)));
+    storeTraced(cell, tracePixel(pixel, position.xyz, normalize(texelFetch(uNormal, pixel, 0).xyz)));
     if (uDownscale > 1) imageStore(uTracedPixel, cell, uvec4(packTracedPixel(pixel)));
 }

@@ -20,6 +20,7 @@ void count64(uint index, uint value) {
 }
 
 layout(binding = TEXTURE_GBUFFER_GEOMETRIC_NORMAL) uniform sampler2D uGeometricNormal;
+uniform int uDownscale;  // pixels per side of a traced block: 1 (every pixel), 2 or 4
 // Where the traced irradiance goes: the indirect image, or the traced blocks' image.
 layout(rgba32f, binding = IMAGE_INDIRECT) uniform image2D uIndirect;
 
@@ -37,12 +38,12 @@ void storeTraced(ivec2 at, vec4 traced) {
 // counted as one traced pixel with its samples. No light arrives from behind the pixel's triangle
 // (gatherIrradiance), however far smooth shading leans the normal from it. A dispatch that
 // continues the trace returns its part: the irradiance its cones add and the visibility they take
-// away (storeTraced adds it). `stratum`: the block of traced pixels the pixel belongs to, whose
-// narrow cones continue one sequence of directions over the samples (narrowConeShift).
-vec4 tracePixel(ivec2 pixel, ivec2 stratum, vec3 position, vec3 normal) {
+// away (storeTraced adds it). The pixel's block of traced pixels continues one sequence of
+// narrow-cone directions over the samples (narrowConeShift).
+vec4 tracePixel(ivec2 pixel, vec3 position, vec3 normal) {
     const vec3 origin = (position - uVoxelOrigin) * uVoxelScale + normal * uConeOffset;
     const vec4 gathered = gatherIrradiance(origin, normal, texelFetch(uGeometricNormal, pixel, 0).xyz,
-                                           narrowConeShift(origin, stratum));
+                                           narrowConeShift(origin, pixel / uDownscale));
     count64(CONE_COUNTER_SAMPLES, samplesTaken);
     count64(CONE_COUNTER_SAMPLES_SAVED, samplesSaved);
     if (!continuesTrace()) count64(CONE_COUNTER_TRACED_PIXELS, 1u);

@@ -25,7 +25,6 @@ layout(binding = TEXTURE_GBUFFER_POSITION) uniform sampler2D uPosition;
 layout(binding = TEXTURE_TRACED_IRRADIANCE) uniform sampler2D uTraced;
 layout(binding = TEXTURE_TRACED_PIXEL) uniform usampler2D uTracedPixel;
 
-uniform int uDownscale;  // pixels per side of a traced block: 2 or 4
 
 // Pixels that trace their own cones (packTracedPixel), their count in coneCounters.
 layout(std430, binding = SSBO_OWN_TRACE_PIXELS) buffer OwnTracePixels { uint ownTracePixels[]; };
@@ -36,7 +35,7 @@ void main() {
     if (listed >= coneCounters[CONE_COUNTER_OWN_TRACES]) return;
     const ivec2 pixel = unpackTracedPixel(ownTracePixels[listed]);
     const vec3 position = texelFetch(uPosition, pixel, 0).xyz;
-    storeTraced(pixel, tracePixel(pixel, pixel / uDownscale, position, normalize(texelFetch(uNormal, pixel, 0).xyz)));
+    storeTraced(pixel, tracePixel(pixel, position, normalize(texelFetch(uNormal, pixel, 0).xyz)));
 }
 #else
 

@@ -31,7 +31,7 @@ void main() {
 #endif
     ivec3 origin = brickOrigin(node);
     for (int s = 0; s < 27; ++s) {
-        ivec3 local = ivec3(s % 3, (s / 3) % 3, s / 9);
+        ivec3 local = blockCoord3(s);
         vec3 plus = texelFetch(uOpacityPlus, origin + local, 0).xyz, minus = texelFetch(uOpacityMinus, origin + local, 0).xyz;
         for (int a = 0; a < 3; ++a) {
             imageStore(uDirectional, directionalBrickOrigin(node, 2 * a) + local, vec4(0.0, 0.0, 0.0, plus[a]));

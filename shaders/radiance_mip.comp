@@ -47,7 +47,7 @@ void main() {
                 for (int o = 0; o < 27; ++o) {
                     uint child;
                     ivec3 local;
-                    bool found = childSampleAt(children, 2 * q + ivec3(o % 3, (o / 3) % 3, o / 9) - 1, child, local);
+                    bool found = childSampleAt(children, 2 * q + blockCoord3(o) - 1, child, local);
                     texels[o] = ivec4(found ? directionalBrickOrigin(child, 0) + local : ivec3(0), found ? 1 : 0);
                 }
                 vec4 tauPlus = texelFetch(uOpacityPlus, origin + q, 0), tauMinus = texelFetch(uOpacityMinus, origin + q, 0);

@@ -16,7 +16,7 @@ void main() {
     ivec3 coord = ivec3(unpackCell(nodeCoord[node]));
     int size = 1 << uLevel;
     for (int o = 0; o < 27; ++o) {
-        ivec3 target = coord + ivec3(o % 3, (o / 3) % 3, o / 9) - 1;
+        ivec3 target = coord + blockCoord3(o) - 1;
         if (any(lessThan(target, ivec3(0))) || any(greaterThanEqual(target, ivec3(size)))) continue;
         uint other = o == 13 ? node : findNode(uvec3(target), uLevel);
         if (other == NONE) continue;

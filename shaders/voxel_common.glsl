@@ -3,6 +3,10 @@
 uint packCell(uvec3 c) { return c.x | (c.y << 10) | (c.z << 20); }
 uvec3 unpackCell(uint p) { return uvec3(p & 1023u, (p >> 10) & 1023u, (p >> 20) & 1023u); }
 
+// Entry i (0..26) of a 3×3×3 block stored x fastest: its coordinates, each 0..2 (a brick's
+// samples; less one, the offsets of a node's neighbourhood, brick_gather.glsl).
+ivec3 blockCoord3(int i) { return ivec3(i % 3, (i / 3) % 3, i / 9); }
+
 // Opacity is filtered as optical depth, not as α: a voxel of opacity α has optical depth
 // τ = −ln(1 − α) per voxel length (α capped at 0.999, τ ≤ 6.9). Linear filtering of a density
 // preserves its integral along any line, so a one-voxel wall stays opaque at every coarser level;

@@ -98,9 +98,12 @@ void applyParameter(PointSettings& s, const std::string& name, const Json& v) {
         s.cones.rays = integer(v, what, 0, 64);
         validateConeSettings(s.cones);
     } else if (name == "sample_cones") {
-        if (!v.is_string() || (v.get<std::string>() != "narrow" && v.get<std::string>() != "set"))
-            fail(what, " must be \"narrow\" or \"set\"");
-        s.cones.narrowConesAfterFirstSample = v.get<std::string>() == "narrow";
+        if (!v.is_string()) fail(what, " must be \"narrow\" or \"set\"");
+        try {
+            s.cones.narrowConesAfterFirstSample = parseSampleCones(v.get<std::string>());
+        } catch (const Error&) {
+            fail(what, " must be \"narrow\" or \"set\", not \"", v.get<std::string>(), "\"");
+        }
     } else if (name == "cone_aperture") {
         s.cones.apertureScale = float(number(v, what, 1e-3, 4.0));
     } else if (name == "cone_step") {
@@ -145,7 +148,7 @@ std::string parameterValue(const PointSettings& s, const std::string& name) {
     if (name == "voxel_levels") return std::to_string(s.voxelLevels);
     if (name == "cones") return std::to_string(s.cones.cones);
     if (name == "cone_rays") return std::to_string(s.cones.rays);
-    if (name == "sample_cones") return s.cones.narrowConesAfterFirstSample ? "narrow" : "set";
+    if (name == "sample_cones") return sampleConesName(s.cones.narrowConesAfterFirstSample);
     if (name == "cone_aperture") return formatNumber(s.cones.apertureScale);
     if (name == "cone_step") return formatNumber(s.cones.step);
     if (name == "cone_offset") return formatNumber(s.cones.offset);

@@ -92,9 +92,7 @@ RenderSettings renderSettingsFromOptions(const RenderSettingsOptions& o, const S
     settings.photons = !o.noPhotons;
     settings.bounces = o.bounces;
     settings.cones = o.cones;
-    if (o.sampleCones != "narrow" && o.sampleCones != "set")
-        fail("--sample-cones must be narrow or set, not '", o.sampleCones, "'");
-    settings.cones.narrowConesAfterFirstSample = o.sampleCones == "narrow";
+    settings.cones.narrowConesAfterFirstSample = parseSampleCones(o.sampleCones);
     settings.giResolution = parseGiResolution(o.giResolution);
     settings.giFilter = o.giFilter;
     validateRenderSettings(settings);

@@ -27,7 +27,7 @@ struct RenderSettingsOptions {
     bool noPhotons = false;
     int bounces = 1;
     ConeSettings cones;
-    std::string sampleCones = "narrow";
+    std::string sampleCones = sampleConesName(ConeSettings{}.narrowConesAfterFirstSample);
     std::string giResolution = "auto";
     float giFilter = kDefaultGiFilterVoxels;
     float giScale = 1.0f;

@@ -146,6 +146,13 @@ SampleCones conesForSample(const ConeSettings& frame, int sample) {
     return s;
 }
 
+bool parseSampleCones(const std::string& name) {
+    if (name != "narrow" && name != "set") fail("--sample-cones must be narrow or set, not '", name, "'");
+    return name == "narrow";
+}
+
+const char* sampleConesName(bool narrowConesAfterFirstSample) { return narrowConesAfterFirstSample ? "narrow" : "set"; }
+
 ConeSettings voxelGatherCones(ConeSettings settings) {
     settings.rays = 0;
     settings.narrowConesAfterFirstSample = ConeSettings{}.narrowConesAfterFirstSample;

@@ -71,6 +71,9 @@ struct SampleCones {
 // cones, the (k−1)-th of the sequence; the average over N samples then holds the cone set with
 // weight 1/N. Explicit narrow cones (`--cone-rays`) trace as asked at every sample.
 SampleCones conesForSample(const ConeSettings& frame, int sample);
+// `--sample-cones`: "narrow" (narrowConesAfterFirstSample) or "set"; throws naming the option.
+bool parseSampleCones(const std::string& name);
+const char* sampleConesName(bool narrowConesAfterFirstSample);
 
 // The cones that gathers at the voxels (further bounces) trace: the cone set of `settings`, with
 // its aperture, step, offsets and diagnostic cone. Narrow cones (`--cone-rays`) and what the later
