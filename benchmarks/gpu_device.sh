@@ -4,14 +4,19 @@
 # benchmarks/gpu.sh, render one 1920x1080 picture at 512³, check that three renders agree, then run
 # the test suite on EGL.
 # Everything lands in $OUT/gpu_results.tar ($OUT defaults to /tmp/vct_gpu): the results
-# gpu.sh wrote, the picture, the ctest log and steps.log, the one-line account of each step.
+# gpu.sh wrote, the picture, the ctest log and steps.log, the one-line account of each step. The
+# archive is written again after every step, so a run stopped at the machine's time limit still
+# brings back what the finished steps measured; if EGL renders nothing the run stops there.
 # Tests that need OSMesa or Embree fail there by construction (the stubs); the rest must pass.
 set -uo pipefail
 cd "$(dirname "$0")/.."
 root=$PWD
 out=${OUT:-/tmp/vct_gpu}/gpu_results
 mkdir -p "$out"
-step() { echo "== $*" | tee -a "$out/steps.log"; }
+step() {
+    echo "== $*" | tee -a "$out/steps.log"
+    (cd "$out/.." && tar -cf gpu_results.tar.part gpu_results && mv gpu_results.tar.part gpu_results.tar)
+}
 
 for deb in .gl/*.deb; do dpkg -x "$deb" /; done
 ldconfig
@@ -29,27 +34,27 @@ check() { timeout 120 build/vct render -q --scene cornell --width 64 --height 48
 if ! check; then
     step "EGL check failed ($(tail -1 "$out/check.log")); again with NVIDIA's EGL vendor file"
     export __EGL_VENDOR_LIBRARY_FILENAMES=/usr/local/nvidia/share/glvnd/egl_vendor.d/10_nvidia.json
-    check || step "EGL still failing: $(tail -3 "$out/check.log")"
+    check || { step "EGL still failing, stopping: $(tail -3 "$out/check.log")"; exit 1; }
 fi
 step "renderer: $(sed -n 's/^ *"renderer": "\(.*\)",*$/\1/p' "$out/check.json")"
 
 clock() { nvidia-smi --query-gpu=clocks.sm,clocks.mem --format=csv,noheader 2>/dev/null | head -1; }
 start=$SECONDS before=$(clock)
-timeout 300 bash benchmarks/gpu.sh --no-build --no-tests >"$out/gpu.log" 2>&1
+timeout 240 bash benchmarks/gpu.sh --no-build --no-tests >"$out/gpu.log" 2>&1
 step "gpu.sh: exit $? in $((SECONDS - start)) s (SM, memory clock before: $before; after: $(clock))"
 cp benchmarks/results/gpu_* "$out/" 2>/dev/null
 start=$SECONDS
-timeout 90 build/vct render -q --scene sponza --voxel-levels 9 --width 1920 --height 1080 --frames 2 \
+timeout 60 build/vct render -q --scene sponza --voxel-levels 9 --width 1920 --height 1080 --frames 2 \
     --out "$out/sponza_1080p_L9.png" --timings "$out/sponza_1080p_L9.json" >"$out/picture.log" 2>&1
 step "picture: exit $? in $((SECONDS - start)) s"
 # Run-to-run determinism on this driver: the suite's determinism tests force OSMesa, so three
 # renders of Sponza's indirect light here must give one hash.
 hashes=$(for run in 1 2 3; do
-    timeout 60 build/vct render -q --scene sponza --width 160 --height 90 --voxel-levels 7 --aov indirect \
+    timeout 30 build/vct render -q --scene sponza --width 160 --height 90 --voxel-levels 7 --aov indirect \
         --out "$out/determinism.png" --hdr-out "$out/determinism.pfm" >/dev/null 2>&1 && md5sum <"$out/determinism.pfm"
 done | sort -u | wc -l)
 step "determinism: three renders of Sponza's indirect light, $hashes distinct hash(es)"
 start=$SECONDS
-(cd build && timeout 200 ctest -j"$(nproc)" --output-on-failure --timeout 150) >"$out/ctest.log" 2>&1
+(cd build && timeout 150 ctest -j"$(nproc)" --output-on-failure --timeout 100) >"$out/ctest.log" 2>&1
 step "ctest: exit $? in $((SECONDS - start)) s: $(grep -E 'tests passed|tests failed' "$out/ctest.log")"
-(cd "$out/.." && tar -cf gpu_results.tar gpu_results && rm -rf gpu_results)
+rm -rf "$out"
