@@ -15,11 +15,12 @@
 
 namespace {
 
-std::string renderBytes(const std::filesystem::path& dir, const std::string& name, const std::string& environment) {
+std::string renderBytes(const std::filesystem::path& dir, const std::string& name, const std::string& environment,
+                        const std::string& frames = "--frames 2 --light-path orbit") {
     const auto out = dir / name;
     const vct::test::CommandResult r = vct::test::runVct(
-        "render -q --scene cornell --width 48 --height 36 --voxel-levels 6 --bounces 2 --frames 2 "
-        "--light-path orbit --out " + out.string() + ".png --hdr-out " + out.string() + ".pfm",
+        "render -q --scene cornell --width 48 --height 36 --voxel-levels 6 --bounces 2 " + frames + " --out " +
+            out.string() + ".png --hdr-out " + out.string() + ".pfm",
         environment);
     EXPECT_EQ(r.exitCode, 0) << r.output;
     std::ifstream in(out.string() + ".pfm", std::ios::binary);
@@ -34,4 +35,14 @@ TEST(DriverChecks, PoisonedBuffersAndFullBarriersChangeNoBit) {
     ASSERT_GT(plain.size(), 48u * 36u * 12u);
     EXPECT_EQ(renderBytes(dir, "poisoned", "VCT_GL_POISON=1"), plain) << "a pass reads a buffer nobody wrote";
     EXPECT_EQ(renderBytes(dir, "barriers", "VCT_GL_ALL_BARRIERS=1"), plain) << "a pass asks for too few barrier bits";
+}
+
+TEST(DriverChecks, RebuildsThatKeepTheirStorageWriteAllOfIt) {
+    // Full frames rebuild the octree and the radiance volume in the storage of the previous build
+    // (gl::fitBuffer, fitBrickPool); poisoned again, it must still give the image of one frame.
+    const auto dir = vct::test::testDir();
+    const std::string once = renderBytes(dir, "once", "", "--frames 1");
+    ASSERT_GT(once.size(), 48u * 36u * 12u);
+    EXPECT_EQ(renderBytes(dir, "rebuilt", "VCT_GL_POISON=1", "--frames 3 --full-frames"), once)
+        << "a rebuild reads storage the previous build left";
 }

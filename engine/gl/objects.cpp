@@ -27,6 +27,34 @@ Buffer createBuffer(GLsizeiptr bytes, const void* data, GLbitfield storageFlags,
     return buffer;
 }
 
+GLsizeiptr bufferBytes(const Buffer& buffer) {
+    if (!buffer) return 0;
+    GLint64 size = 0;
+    glGetNamedBufferParameteri64v(buffer.id(), GL_BUFFER_SIZE, &size);
+    return GLsizeiptr(size);
+}
+
+bool fitBuffer(Buffer& buffer, GLsizeiptr bytes, GLbitfield storageFlags, const char* text) {
+    const GLsizeiptr wanted = bytes > 0 ? bytes : 16;  // createBuffer's smallest store
+    if (buffer) {
+        const GLsizeiptr held = bufferBytes(buffer);
+        GLint flags = 0;
+        glGetNamedBufferParameteriv(buffer.id(), GL_BUFFER_STORAGE_FLAGS, &flags);
+        if (held >= wanted && held - wanted <= wanted / 4 && GLbitfield(flags) == storageFlags) {
+            if (poisonNewStorage())
+                glClearNamedBufferData(buffer.id(), GL_R8UI, GL_RED_INTEGER, GL_UNSIGNED_BYTE, &kPoisonByte);
+            return false;
+        }
+        buffer.reset();  // before the new one: both at once may not fit
+        // A whole number of the largest element vct clears with (RGBA32F), like the exact size.
+        const GLsizeiptr roomy = (wanted + wanted / 8 + 15) / 16 * 16;
+        buffer = createBuffer(roomy, nullptr, storageFlags, text);
+        return true;
+    }
+    buffer = createBuffer(bytes, nullptr, storageFlags, text);
+    return true;
+}
+
 Texture createTexture(GLenum target, const char* text) {
     GLuint id = 0;
     glCreateTextures(target, 1, &id);

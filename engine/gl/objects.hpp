@@ -61,6 +61,17 @@ VertexArray createVertexArray();
 Query createQuery(GLenum target);
 Sampler createSampler();
 
+// Storage that a pass needs anew at every rebuild of the octree (sized by its node or cell
+// counts): keeps `buffer` while it holds at least `bytes` and no more than a quarter beyond
+// (same storage flags), else replaces it, with an eighth to spare (rounded up to 16 bytes) when
+// it replaces an earlier one, so that geometry that moves a little does not reallocate every
+// frame. Allocating, and on some drivers clearing, hundreds of MB per rebuild cost more than the
+// passes' own work. The contents are undefined either way (poisoned again under VCT_GL_POISON);
+// returns true when the buffer was replaced.
+bool fitBuffer(Buffer& buffer, GLsizeiptr bytes, GLbitfield storageFlags, const char* label);
+// The buffer's size in bytes (0 for none).
+GLsizeiptr bufferBytes(const Buffer& buffer);
+
 // A 2D texture with immutable storage (levels ≥ 1), filtering set to match.
 Texture createTexture2D(GLenum internalFormat, int width, int height, int levels, const char* label);
 

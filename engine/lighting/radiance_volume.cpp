@@ -6,23 +6,26 @@
 
 namespace vct {
 
-void allocateRadianceVolume(const Octree& octree, RadianceVolume& v) {
+void fitRadianceVolume(const Octree& octree, RadianceVolume& v) {
     const std::uint32_t cells = std::max<std::uint32_t>(octree.cellCount(), 1);
     const std::uint32_t all = std::max<std::uint32_t>(octree.totalCount, 1);
     const std::uint32_t nodes = std::max<std::uint32_t>(octree.nodeCount, 1);
     const GLbitfield dynamic = GL_DYNAMIC_STORAGE_BIT;
-    v.accumulators = gl::createBuffer(GLsizeiptr(cells) * 4 * kAccumulatorWords, nullptr, dynamic, "radiance accumulators");
-    v.cellRadiance = gl::createBuffer(GLsizeiptr(cells) * 16, nullptr, dynamic, "cell radiance");
-    v.cellExitShares = gl::createBuffer(GLsizeiptr(cells) * 32, nullptr, dynamic, "cell exit shares");
-    v.touchedFlag = gl::createBuffer(GLsizeiptr(all) * 4, nullptr, dynamic, "touched flags");
-    v.touchedList = gl::createBuffer(GLsizeiptr(all) * 4, nullptr, dynamic, "touched lists");
-    v.borderFlag = gl::createBuffer(GLsizeiptr(nodes) * 4, nullptr, dynamic, "border flags");
-    v.borderList = gl::createBuffer(GLsizeiptr(nodes) * 4, nullptr, dynamic, "border lists");
-    v.listCounts = gl::createBuffer(gl::LIST_COUNT_SLOTS * 4, nullptr, dynamic, "radiance list counts");
-    v.indirectArgs = gl::createBuffer(3 * 4 * gl::LIST_COUNT_SLOTS, nullptr, dynamic, "radiance dispatch args");
-    v.directionalBricks = brickPoolLayout(octree.nodeCount, "nodes", 6);
-    v.directional = createBrickPool(v.directionalBricks * glm::ivec3(1, 1, 6), GL_RGBA32F,
-                                    "radiance pool (+x -x +y -y +z -z)");
+    gl::fitBuffer(v.accumulators, GLsizeiptr(cells) * 4 * kAccumulatorWords, dynamic, "radiance accumulators");
+    gl::fitBuffer(v.cellRadiance, GLsizeiptr(cells) * 16, dynamic, "cell radiance");
+    gl::fitBuffer(v.cellExitShares, GLsizeiptr(cells) * 32, dynamic, "cell exit shares");
+    gl::fitBuffer(v.touchedFlag, GLsizeiptr(all) * 4, dynamic, "touched flags");
+    gl::fitBuffer(v.touchedList, GLsizeiptr(all) * 4, dynamic, "touched lists");
+    gl::fitBuffer(v.borderFlag, GLsizeiptr(nodes) * 4, dynamic, "border flags");
+    gl::fitBuffer(v.borderList, GLsizeiptr(nodes) * 4, dynamic, "border lists");
+    gl::fitBuffer(v.listCounts, gl::LIST_COUNT_SLOTS * 4, dynamic, "radiance list counts");
+    gl::fitBuffer(v.indirectArgs, 3 * 4 * gl::LIST_COUNT_SLOTS, dynamic, "radiance dispatch args");
+    fitBrickPool(v.directional, v.directionalBricks, octree.nodeCount, "nodes", 6, GL_RGBA32F,
+                 "radiance pool (+x -x +y -y +z -z)");
+    // Whatever the pools held belongs to the previous octree.
+    v.bricksBounces = 1;
+    v.darkOutsideBorderFor = 0;
+    v.octreeBuild = octree.geometryBricksBuild;
     gl::checkErrors("allocating the radiance volume");
 }
 
@@ -41,9 +44,12 @@ void bindDirectionalImage(gl::ComputeCall& call, const RadianceVolume& v, GLenum
         .uniform("uDirectionalBricks", v.directionalBricks);
 }
 
-std::size_t RadianceVolume::bytes(const Octree& octree) const {
-    return std::size_t(octree.cellCount()) * (4 * kAccumulatorWords + 16 + 32) + std::size_t(octree.totalCount) * 8 +
-           std::size_t(octree.nodeCount) * 8 + brickPoolBytes(directionalBricks * glm::ivec3(1, 1, 6), 16);
+std::size_t RadianceVolume::bytes() const {
+    std::size_t total = brickPoolBytes(directionalBricks * glm::ivec3(1, 1, 6), 16);
+    for (const gl::Buffer* b : {&accumulators, &cellRadiance, &cellExitShares, &touchedFlag, &touchedList, &borderFlag,
+                                &borderList, &listCounts, &indirectArgs})
+        total += std::size_t(gl::bufferBytes(*b));
+    return total;
 }
 
 RadianceStatistics readRadianceStatistics(const Octree& octree, const RadianceVolume& v) {

@@ -52,12 +52,16 @@ struct RadianceVolume {
     std::uint64_t darkOutsideBorderFor = 0;
 
     double wattsPerUnit = 0.0;  // fixed point of the photon sums (fluxWattsPerUnit, inject.hpp)
+    // The octree build (Octree::geometryBricksBuild) the buffers were last fitted to.
+    std::uint64_t octreeBuild = 0;
 
-    std::size_t bytes(const Octree& octree) const;
+    // GPU memory held (the buffers may hold more than the octree needs: gl::fitBuffer).
+    std::size_t bytes() const;
 };
 
-// Allocates everything for `octree` (once per octree build).
-void allocateRadianceVolume(const Octree& octree, RadianceVolume& volume);
+// Sizes everything for `octree` (once per octree build), keeping the storage of the previous
+// build where it fits (gl::fitBuffer, fitBrickPool), and forgets what it held.
+void fitRadianceVolume(const Octree& octree, RadianceVolume& volume);
 
 // Sets list counts [first, end) (gl::*_SLOT) to zero.
 void clearListCounts(const RadianceVolume& volume, unsigned first, unsigned end);

@@ -95,10 +95,8 @@ void renderLightViews(FrameResources& f) {
 
 void injectPhotons(FrameResources& f) {
     const Octree& octree = f.svo->octree();
-    if (!f.radiance) {
-        f.radiance = std::make_unique<RadianceVolume>();
-        allocateRadianceVolume(octree, *f.radiance);
-    }
+    if (!f.radiance) f.radiance = std::make_unique<RadianceVolume>();
+    if (f.radiance->octreeBuild != octree.geometryBricksBuild) fitRadianceVolume(octree, *f.radiance);
     if (!f.injection) f.injection = std::make_unique<PhotonInjection>();
     f.injection->run(octree, *f.radiance, *f.scene, f.lights, f.lightViews.views(), f.settings.photons);
 }
@@ -183,8 +181,7 @@ const PassTable kFramePasses = {{
      {}, {R::Fragments}, {R::Octree}, unlessOctree,
      "svo_flag.comp, svo_alloc.comp, prefix_sum.comp, svo_init.comp, svo_descend.comp",
      [](FrameResources& f, const FrameView&) {
-         f.svo->buildStructure();
-         f.radiance.reset();  // sized for the previous octree
+         f.svo->buildStructure();  // inject fits the radiance volume to it (fitRadianceVolume)
      }},
     {Pass::SvoLeaves, "svo_leaves", Stage::Octree,
      {I::Materials}, {R::Fragments, R::Octree}, {R::CellValues}, unlessOctree,

@@ -51,17 +51,37 @@ gl::Texture createBrickPool(glm::ivec3 bricksPerAxis, GLenum format, const char*
     return t;
 }
 
+void fitBrickPool(gl::Texture& pool, glm::ivec3& layout, std::uint32_t bricks, const char* what, int depthShare,
+                  GLenum format, const char* label) {
+    const glm::ivec3 wanted = brickPoolLayout(bricks, what, depthShare);
+    if (pool && wanted == layout) {
+        gl::poisonNewTexture(pool.id(), format, 1);
+        return;
+    }
+    pool.reset();  // before the new one: both at once may not fit
+    layout = wanted;
+    pool = createBrickPool(layout * glm::ivec3(1, 1, depthShare), format, label);
+}
+
 std::size_t brickPoolBytes(glm::ivec3 b, std::size_t bytesPerTexel) {
     return std::size_t(b.x) * b.y * b.z * 27 * bytesPerTexel;
 }
 
-void allocateBrickPool(Octree& octree) {
-    octree.brickPoolBricks = brickPoolLayout(octree.nodeCount, "nodes");
-    octree.brickAlbedo = createBrickPool(octree.brickPoolBricks, GL_RGBA16F, "brick pool albedo/opacity");
-    octree.brickOpacityPlus = createBrickPool(octree.brickPoolBricks, GL_RGBA16F, "brick pool opacity +x +y +z");
-    octree.brickOpacityMinus = createBrickPool(octree.brickPoolBricks, GL_RGBA16F, "brick pool opacity -x -y -z");
-    octree.rawValue = gl::createBuffer(GLsizeiptr(std::max<std::uint32_t>(octree.nodeCount, 1)) * 16, nullptr, 0,
-                                       "node raw values");
+void fitBrickPools(Octree& octree) {
+    const bool had = bool(octree.brickAlbedo);
+    const glm::ivec3 before = octree.brickPoolBricks;
+    fitBrickPool(octree.brickAlbedo, octree.brickPoolBricks, octree.nodeCount, "nodes", 1, GL_RGBA16F,
+                 "brick pool albedo/opacity");
+    if (had && octree.brickPoolBricks == before && octree.brickOpacityPlus && octree.brickOpacityMinus) {
+        gl::poisonNewTexture(octree.brickOpacityPlus.id(), GL_RGBA16F, 1);
+        gl::poisonNewTexture(octree.brickOpacityMinus.id(), GL_RGBA16F, 1);
+    } else {  // the opacity pools share the albedo pool's layout
+        octree.brickOpacityPlus.reset();
+        octree.brickOpacityMinus.reset();
+        octree.brickOpacityPlus = createBrickPool(octree.brickPoolBricks, GL_RGBA16F, "brick pool opacity +x +y +z");
+        octree.brickOpacityMinus = createBrickPool(octree.brickPoolBricks, GL_RGBA16F, "brick pool opacity -x -y -z");
+    }
+    gl::fitBuffer(octree.rawValue, GLsizeiptr(std::max<std::uint32_t>(octree.nodeCount, 1)) * 16, 0, "node raw values");
 }
 
 void setBrickPoolUniforms(GLuint program, const Octree& octree) {

@@ -22,11 +22,18 @@ PartialBricks createPartialBricks(const Octree& octree, int level);
 glm::ivec3 brickPoolLayout(std::uint32_t bricks, const char* what, int depthShare = 1);
 // A pool of that many bricks per axis (3 texels each), linear filtering, clamped at its edges.
 gl::Texture createBrickPool(glm::ivec3 bricksPerAxis, GLenum format, const char* label);
+// gl::fitBuffer for a pool of `bricks` bricks (the texture holds depthShare such pools stacked
+// along z): keeps `pool` while brickPoolLayout gives the `layout` it has, else replaces both. No
+// room to spare: lookups in the pool use coordinates normalized by its size, whose rounding would
+// differ in the last bits between a roomier pool and a fresh one, and an image must not depend on
+// the builds before it. The samples are undefined either way.
+void fitBrickPool(gl::Texture& pool, glm::ivec3& layout, std::uint32_t bricks, const char* what, int depthShare,
+                  GLenum format, const char* label);
 std::size_t brickPoolBytes(glm::ivec3 bricksPerAxis, std::size_t bytesPerTexel);
 
-// Allocates octree.brickAlbedo and the opacity pools with one brick per node (levels 0..L−1), and
-// octree.rawValue.
-void allocateBrickPool(Octree& octree);
+// Sizes octree.brickAlbedo and the opacity pools for one brick per node (levels 0..L−1), and
+// octree.rawValue, keeping the previous build's storage where it fits (fitBrickPool).
+void fitBrickPools(Octree& octree);
 
 class BrickCompletion {
 public:

@@ -7,7 +7,7 @@ Bricks::Bricks()
       opacityLeaf_(gl::buildProgram({{GL_COMPUTE_SHADER, "bricks_opacity.comp"}}, {"LEAF 1"})) {}
 
 PartialBricks Bricks::run(Octree& octree) {
-    allocateBrickPool(octree);
+    fitBrickPools(octree);
     const int leafLevel = octree.levels - 1;
     PartialBricks albedo = createPartialBricks(octree, leafLevel);
     brickLevelCall(albedoLeaf_, octree, leafLevel)

@@ -6,8 +6,15 @@
 
 namespace vct {
 
+std::size_t Octree::cellBytes() const {
+    std::size_t total = 0;
+    for (const gl::Buffer* b : {&cellAlbedo, &cellNormal, &cellArea, &cellFragments, &cellEmissive, &cellColumns, &cellOpacity})
+        total += std::size_t(gl::bufferBytes(*b));
+    return total;
+}
+
 std::size_t Octree::brickPoolBytes() const {
-    return 3 * vct::brickPoolBytes(brickPoolBricks, 8) + std::size_t(nodeCount) * 16;
+    return 3 * vct::brickPoolBytes(brickPoolBricks, 8) + std::size_t(gl::bufferBytes(rawValue));
 }
 
 std::size_t Octree::denseTextureBytes() const {

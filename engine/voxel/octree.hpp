@@ -69,7 +69,9 @@ struct Octree {
     std::uint32_t leafCount() const { return levelCount[levels - 1]; }  // nodes whose children are cells
     std::size_t nodePoolBytes() const { return std::size_t(totalCount) * 16; }
     std::size_t neighbourBytes() const { return std::size_t(nodeCount) * 24; }
-    std::size_t cellBytes() const { return std::size_t(cellCount()) * (24 + (hasEmissive ? 16 : 0)); }
+    // What the cell buffers and the brick pools hold, which can exceed what the octree needs (kept
+    // from an earlier build: gl::fitBuffer).
+    std::size_t cellBytes() const;
     std::size_t brickPoolBytes() const;
     // A dense RGBA16F 3D texture of the same resolution with its full mip chain (for comparison).
     std::size_t denseTextureBytes() const;

@@ -1,5 +1,7 @@
 #include "voxel/svo_leaves.hpp"
 
+#include <algorithm>
+
 #include "core/error.hpp"
 #include "gl/compute.hpp"
 
@@ -25,17 +27,18 @@ LeafStatistics SvoLeaves::run(const FragmentList& fragments, GLuint fragmentNode
     if (std::uint64_t(cells) * kAccumulatorFields > std::uint64_t(maxTexels))
         fail("the octree has ", cells, " occupied cells; their accumulators exceed this GPU's buffer-texture limit (",
              maxTexels / kAccumulatorFields, " cells); lower --voxel-levels");
-    gl::Buffer accumulators =
-        gl::createBuffer(GLsizeiptr(cells) * kAccumulatorFields * 4, nullptr, GL_DYNAMIC_STORAGE_BIT, "cell accumulators");
+    // The sums' views cover exactly the cells: a kept buffer may be larger (gl::fitBuffer).
+    const GLsizeiptr accumulatorBytes = GLsizeiptr(cells) * kAccumulatorFields * 4;
+    const GLsizeiptr projectedBytes = GLsizeiptr(cells) * kProjectedFields * 4;
+    gl::fitBuffer(accumulators_, accumulatorBytes, GL_DYNAMIC_STORAGE_BIT, "cell accumulators");
+    gl::fitBuffer(projected_, projectedBytes, GL_DYNAMIC_STORAGE_BIT, "cell projected areas");
     const std::uint32_t zero = 0;
-    glClearNamedBufferData(accumulators.id(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
+    glClearNamedBufferSubData(accumulators_.id(), GL_R32UI, 0, accumulatorBytes, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
+    glClearNamedBufferSubData(projected_.id(), GL_R32UI, 0, projectedBytes, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
     gl::Texture accumulatorTexture = gl::createTexture(GL_TEXTURE_BUFFER, "cell accumulators");
-    glTextureBuffer(accumulatorTexture.id(), GL_R32UI, accumulators.id());
-    gl::Buffer projected =
-        gl::createBuffer(GLsizeiptr(cells) * kProjectedFields * 4, nullptr, GL_DYNAMIC_STORAGE_BIT, "cell projected areas");
-    glClearNamedBufferData(projected.id(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
+    glTextureBufferRange(accumulatorTexture.id(), GL_R32UI, accumulators_.id(), 0, std::max<GLsizeiptr>(accumulatorBytes, 4));
     gl::Texture projectedTexture = gl::createTexture(GL_TEXTURE_BUFFER, "cell projected areas");
-    glTextureBuffer(projectedTexture.id(), GL_R32UI, projected.id());
+    glTextureBufferRange(projectedTexture.id(), GL_R32UI, projected_.id(), 0, std::max<GLsizeiptr>(projectedBytes, 4));
 
     octree.hasEmissive = emissive;
     const float emissiveScale = maxEmission > 0.0f ? 16777216.0f / maxEmission : 0.0f;
@@ -54,17 +57,17 @@ LeafStatistics SvoLeaves::run(const FragmentList& fragments, GLuint fragmentNode
         .dispatch1D(fragments.count, 64, barrier);
 
     const GLsizeiptr bytes = GLsizeiptr(std::max<std::uint32_t>(cells, 1)) * 4;
-    octree.cellAlbedo = gl::createBuffer(bytes, nullptr, 0, "cell albedo");
-    octree.cellNormal = gl::createBuffer(bytes, nullptr, 0, "cell normal");
-    octree.cellArea = gl::createBuffer(bytes, nullptr, 0, "cell area");
-    octree.cellFragments = gl::createBuffer(bytes, nullptr, 0, "cell fragments");
-    octree.cellColumns = gl::createBuffer(bytes, nullptr, 0, "cell column partners");
-    octree.cellOpacity = gl::createBuffer(bytes, nullptr, 0, "cell opacity by axis");
-    if (emissive) octree.cellEmissive = gl::createBuffer(bytes * 4, nullptr, 0, "cell emission");
+    gl::fitBuffer(octree.cellAlbedo, bytes, 0, "cell albedo");
+    gl::fitBuffer(octree.cellNormal, bytes, 0, "cell normal");
+    gl::fitBuffer(octree.cellArea, bytes, 0, "cell area");
+    gl::fitBuffer(octree.cellFragments, bytes, 0, "cell fragments");
+    gl::fitBuffer(octree.cellColumns, bytes, 0, "cell column partners");
+    gl::fitBuffer(octree.cellOpacity, bytes, 0, "cell opacity by axis");
+    if (emissive) gl::fitBuffer(octree.cellEmissive, bytes * 4, 0, "cell emission");
     else octree.cellEmissive.reset();
-    gl::Buffer status = gl::createBuffer(8, nullptr, GL_DYNAMIC_STORAGE_BIT, "leaf status");
+    if (!status_) status_ = gl::createBuffer(8, nullptr, GL_DYNAMIC_STORAGE_BIT, "leaf status");
     const std::uint32_t zeros[2] = {0, 0};
-    glNamedBufferSubData(status.id(), 0, 8, zeros);
+    glNamedBufferSubData(status_.id(), 0, 8, zeros);
 
     gl::ComputeCall normalize(normalize_);
     octree.bind(normalize.program());
@@ -72,7 +75,7 @@ LeafStatistics SvoLeaves::run(const FragmentList& fragments, GLuint fragmentNode
         .uniform("uEmissiveScale", emissiveScale)
         .image(gl::IMAGE_CELL_ACCUMULATORS, accumulatorTexture.id(), GL_READ_ONLY, GL_R32UI)
         .image(gl::IMAGE_PROJECTED_AREA, projectedTexture.id(), GL_READ_ONLY, GL_R32UI)
-        .storage(gl::SSBO_LEAF_STATUS, status)
+        .storage(gl::SSBO_LEAF_STATUS, status_)
         .storage(gl::SSBO_CELL_VALUES, octree.cellAlbedo)
         .storage(gl::SSBO_CELL_NORMAL, octree.cellNormal)
         .storage(gl::SSBO_CELL_AREA, octree.cellArea)
@@ -83,7 +86,7 @@ LeafStatistics SvoLeaves::run(const FragmentList& fragments, GLuint fragmentNode
     normalize.dispatch1D(cells, 64, barrier | GL_BUFFER_UPDATE_BARRIER_BIT);
 
     std::uint32_t result[2] = {0, 0};
-    glGetNamedBufferSubData(status.id(), 0, 8, result);
+    glGetNamedBufferSubData(status_.id(), 0, 8, result);
     if (result[0] > 0)
         fail(result[0], " voxels received more than 16,843,009 fragments each (largest: ", result[1],
              "); their 32-bit sums would overflow. Lower --voxel-levels or simplify the model");

@@ -19,6 +19,8 @@ public:
 
 private:
     gl::Program accumulate_, normalize_;
+    // The integer sums and the overflow status, kept from build to build (gl::fitBuffer).
+    gl::Buffer accumulators_, projected_, status_;
 };
 
 }  // namespace vct
