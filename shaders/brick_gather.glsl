@@ -7,31 +7,37 @@
 // bit-identical in every brick that holds it.
 // Requires voxel_common.glsl and octree.glsl.
 
-// The 3×3×3 nodes around `node` (level uLevel), itself in the middle: index aroundIndex(e) for the
-// offset e ∈ {−1,0,1}³; NONE where there is none.
+// The node at offset blockCoord3(o) − 1 ∈ {−1,0,1}³ from `node` (level uLevel), index
+// aroundIndex of that offset; NONE where there is none.
 int aroundIndex(ivec3 e) { return (e.x + 1) + 3 * (e.y + 1) + 9 * (e.z + 1); }
-void nodesAround(uint node, out uint around[27]) {
-    ivec3 coord = ivec3(unpackCell(nodeCoord[node]));
+uint nodeAround(uint node, int o) {
+    if (o == 13) return node;
+    ivec3 target = ivec3(unpackCell(nodeCoord[node])) + blockCoord3(o) - 1;
     int size = 1 << uLevel;
-    for (int o = 0; o < 27; ++o) {
-        ivec3 target = coord + blockCoord3(o) - 1;
-        around[o] = NONE;
-        if (o == 13) around[o] = node;
-        else if (all(greaterThanEqual(target, ivec3(0))) && all(lessThan(target, ivec3(size))))
-            around[o] = findNode(uvec3(target), uLevel);
-    }
+    if (any(lessThan(target, ivec3(0))) || any(greaterThanEqual(target, ivec3(size)))) return NONE;
+    return findNode(uvec3(target), uLevel);
+}
+// The 3×3×3 nodes around `node`, itself in the middle.
+void nodesAround(uint node, out uint around[27]) {
+    for (int o = 0; o < 27; ++o) around[o] = nodeAround(node, o);
 }
 
-// The children around the node in the middle of `around`: index (s.x+1) + 4(s.y+1) + 16(s.z+1)
-// for child slot s ∈ {−1,0,1,2}³ relative to the node's own children; NONE where there is none.
+// Child v of the 4×4×4 block around the node in the middle of a 3×3×3 neighbourhood, index
+// (s.x+1) + 4(s.y+1) + 16(s.z+1) for child slot s ∈ {−1,0,1,2}³ relative to the node's own
+// children: child `slot` of the neighbour aroundIndex(⌊s/2⌋).
+int childAround(int v, out uint slot) {
+    ivec3 s = ivec3(v & 3, (v >> 2) & 3, v >> 4) - 1;
+    ivec3 bit = (s + 2) & 1;
+    slot = uint(bit.x | (bit.y << 1) | (bit.z << 2));
+    return aroundIndex((s + 2) / 2 - 1);
+}
+// The children around the node in the middle of `around`, index v as in childAround; NONE where
+// there is none.
 void childrenAround(const uint around[27], out uint children[64]) {
-    for (int o = 0; o < 27; ++o) {
-        ivec3 offset = blockCoord3(o) - 1;
-        for (uint slot = 0u; slot < 8u; ++slot) {
-            ivec3 s = 2 * offset + ivec3(slot & 1u, (slot >> 1) & 1u, (slot >> 2) & 1u);
-            if (any(lessThan(s, ivec3(-1))) || any(greaterThan(s, ivec3(2)))) continue;
-            children[(s.x + 1) + 4 * (s.y + 1) + 16 * (s.z + 1)] = around[o] == NONE ? NONE : childOf(around[o], slot);
-        }
+    for (int v = 0; v < 64; ++v) {
+        uint slot;
+        uint parent = around[childAround(v, slot)];
+        children[v] = parent == NONE ? NONE : childOf(parent, slot);
     }
 }
 
@@ -63,22 +69,29 @@ int aroundAcross(int a, int db, int dc) {
     return (d.x + 1) + 3 * (d.y + 1) + 9 * (d.z + 1);
 }
 
-// The child node holding child-lattice point p (child-lattice units from the node's minimum
-// corner, p ∈ [−1, 5]³; child slot s spans [2s, 2s + 2]) and p's sample in that child's brick.
-// A point on a child's boundary belongs to up to eight children, any of which holds its complete
-// value; they are tried in a fixed order. False when no child holds p (empty space).
-bool childSampleAt(const uint children[64], ivec3 p, out uint child, out ivec3 local) {
+// Child-lattice point p (child-lattice units from the node's minimum corner, p ∈ [−1, 5]³; child
+// slot s spans [2s, 2s + 2]) lies in up to eight children (on their boundaries), any of which
+// holds its complete value; they are tried in a fixed order. Candidate k (0..7) of that order: the
+// child's index in the 4×4×4 block (gatherChildren) and p's sample in its brick; −1 when p is not
+// on that child.
+int childCandidate(ivec3 p, int k, out ivec3 local) {
     ivec3 s = ivec3(floor(vec3(p) * 0.5));
     ivec3 onBoundary = ivec3(equal(p & 1, ivec3(0))) * ivec3(greaterThan(s, ivec3(-1)));  // may use s − 1
+    ivec3 down = ivec3(k & 1, (k >> 1) & 1, (k >> 2) & 1);
+    if (any(greaterThan(down, onBoundary))) return -1;
+    ivec3 slot = min(s - down, ivec3(2));
+    local = p - 2 * slot;
+    return (slot.x + 1) + 4 * (slot.y + 1) + 16 * (slot.z + 1);
+}
+
+// The child node holding point p and p's sample in its brick: the first candidate that exists.
+// False when no child holds p (empty space).
+bool childSampleAt(const uint children[64], ivec3 p, out uint child, out ivec3 local) {
     for (int k = 0; k < 8; ++k) {
-        ivec3 down = ivec3(k & 1, (k >> 1) & 1, (k >> 2) & 1);
-        if (any(greaterThan(down, onBoundary))) continue;
-        ivec3 slot = min(s - down, ivec3(2));
-        child = children[(slot.x + 1) + 4 * (slot.y + 1) + 16 * (slot.z + 1)];
-        if (child != NONE) {
-            local = p - 2 * slot;
-            return true;
-        }
+        int v = childCandidate(p, k, local);
+        if (v < 0) continue;
+        child = children[v];
+        if (child != NONE) return true;
     }
     return false;
 }

@@ -40,3 +40,5 @@ uint findNode(uvec3 coord, int level) {
 uint linearInvocation() {
     return (gl_WorkGroupID.y * gl_NumWorkGroups.x + gl_WorkGroupID.x) * gl_WorkGroupSize.x + gl_LocalInvocationID.x;
 }
+// Linear index of this work group, for passes that give each item a whole group.
+uint linearWorkGroup() { return gl_WorkGroupID.y * gl_NumWorkGroups.x + gl_WorkGroupID.x; }

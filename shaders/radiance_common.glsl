@@ -44,10 +44,11 @@ const uint BORDER_BEFORE = 2u;
 
 // Bit o of the result: node o of a 3×3×3 neighbourhood (brick_gather.glsl, nodesAround) is on this
 // filtering's border list: the nodes whose shared samples it computes (shared_samples.glsl).
+bool onBorderNow(uint node) { return node != NONE && (borderFlag[node] & BORDER_NOW) != 0u; }
 uint bordersAround(const uint around[27]) {
     uint present = 0u;
     for (int o = 0; o < 27; ++o)
-        if (around[o] != NONE && (borderFlag[around[o]] & BORDER_NOW) != 0u) present |= 1u << uint(o);
+        if (onBorderNow(around[o])) present |= 1u << uint(o);
     return present;
 }
 #endif

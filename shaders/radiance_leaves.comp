@@ -7,6 +7,10 @@ layout(local_size_x = 64) in;
 // mean over them of the radiance that leaves each towards it times its opacity along a: the
 // voxel's radiance L times the share of it that leaves against ±a (facing.glsl).
 // Stored premultiplied by the slab's density (radiance_common.glsl, slabRadiance).
+// A work group takes one node (ListDispatch with one item per group): its invocations find the
+// 27 nodes around it, then each reads one of the 4×4×4 voxels around it into shared memory, then
+// they share the node's 27 samples × 6 directions. One invocation per node holding those voxels
+// in its own arrays (3 KB) ran twice as long on a GPU, which keeps such arrays in slow memory.
 #define WORK_LIST_BORDER
 #include "voxel_common.glsl"
 #include "octree.glsl"
@@ -22,47 +26,50 @@ layout(binding = TEXTURE_OPACITY_PLUS) uniform sampler3D uOpacityPlus;
 layout(binding = TEXTURE_OPACITY_MINUS) uniform sampler3D uOpacityMinus;
 layout(rgba32f, binding = IMAGE_DIRECTIONAL_RADIANCE) uniform writeonly image3D uDirectional;
 
+shared uint sAround[27];
+shared vec3 sSent[64][6];      // what each voxel sends towards each direction through its opacity
+shared float sClear[64][3];    // 1 − its opacity along each axis
+
 void main() {
     bool valid;
-    uint node = workNode(valid);
-    if (!valid) return;
-    uint children[64];
-    gatherChildren(node, children);
-    // The 4×4×4 voxels around the node (−1..2 per axis), each read once: its opacity along each
-    // axis, its outgoing radiance and the shares of it that leave towards the six directions. (The
-    // products, what each voxel sends each way through its opacity, would be 18 floats a voxel
-    // instead of 12: on a CPU rasterizer that local array's traffic is what this pass waits on.)
-    vec3 opacity[64], outgoing[64];
-    float shares[64][6];
-    for (int v = 0; v < 64; ++v) {
-        opacity[v] = vec3(0.0);
-        outgoing[v] = vec3(0.0);
-        shares[v] = float[6](0.0, 0.0, 0.0, 0.0, 0.0, 0.0);
-        if (children[v] == NONE) continue;
-        uint index = children[v] - uLevelStart[uLevels];
-        opacity[v] = min(unpackUnorm4x8(cellOpacity[index]).xyz, vec3(MAX_OPACITY));
+    uint node = groupWorkNode(valid);
+    if (!valid) return;  // the whole group: the node is the group's
+    uint t = gl_LocalInvocationIndex;
+    if (t < 27u) sAround[t] = nodeAround(node, int(t));
+    barrier();
+
+    // Voxel t of the 4×4×4 block around the node, in gatherChildren's order.
+    uint slot;
+    uint parent = sAround[childAround(int(t), slot)];
+    uint child = parent == NONE ? NONE : childOf(parent, slot);
+    vec3 opacity = vec3(0.0), outgoing = vec3(0.0);
+    float shares[6] = float[6](0.0, 0.0, 0.0, 0.0, 0.0, 0.0);
+    if (child != NONE) {
+        uint index = child - uLevelStart[uLevels];
+        opacity = min(unpackUnorm4x8(cellOpacity[index]).xyz, vec3(MAX_OPACITY));
         vec4 radiance = cellRadiance[index];
-        if (radiance.a <= 0.0) continue;
-        outgoing[v] = radiance.rgb / radiance.a;
-        exitShares(index, shares[v]);
+        if (radiance.a > 0.0) {
+            outgoing = radiance.rgb / radiance.a;
+            exitShares(index, shares);
+        }
     }
+    for (int i = 0; i < 6; ++i) sSent[t][i] = opacity[i >> 1] * outgoing * shares[i];
+    for (int a = 0; a < 3; ++a) sClear[t][a] = 1.0 - opacity[a];
+    barrier();
+
     ivec3 origin = brickOrigin(node);
-    for (int k = 0; k < 3; ++k)
-        for (int j = 0; j < 3; ++j)
-            for (int x = 0; x < 3; ++x) {
-                ivec3 q = ivec3(x, j, k);
-                vec4 tauPlus = texelFetch(uOpacityPlus, origin + q, 0), tauMinus = texelFetch(uOpacityMinus, origin + q, 0);
-                for (int i = 0; i < 6; ++i) {
-                    int a = i >> 1;
-                    vec3 seen = vec3(0.0);
-                    float transmittance = 0.0;
-                    for (int column = 0; column < 4; ++column) {
-                        int v = leafSlabVoxel(q, a, (i & 1) == 0, column);
-                        seen += 0.25 * (opacity[v][a] * outgoing[v] * shares[v][i]);
-                        transmittance += 0.25 * (1.0 - opacity[v][a]);
-                    }
-                    float tau = (i & 1) == 0 ? tauPlus[a] : tauMinus[a];
-                    imageStore(uDirectional, directionalBrickOrigin(node, i) + q, slabRadiance(seen, 1.0 - transmittance, tau, 1.0));
-                }
-            }
+    for (uint work = t; work < 27u * 6u; work += gl_WorkGroupSize.x) {
+        ivec3 q = blockCoord3(int(work / 6u));
+        int i = int(work % 6u), a = i >> 1;
+        bool plus = (i & 1) == 0;
+        vec3 seen = vec3(0.0);
+        float transmittance = 0.0;
+        for (int column = 0; column < 4; ++column) {
+            int v = leafSlabVoxel(q, a, plus, column);
+            seen += 0.25 * sSent[v][i];
+            transmittance += 0.25 * sClear[v][a];
+        }
+        float tau = plus ? texelFetch(uOpacityPlus, origin + q, 0)[a] : texelFetch(uOpacityMinus, origin + q, 0)[a];
+        imageStore(uDirectional, directionalBrickOrigin(node, i) + q, slabRadiance(seen, 1.0 - transmittance, tau, 1.0));
+    }
 }

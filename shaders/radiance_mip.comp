@@ -7,6 +7,9 @@ layout(local_size_x = 64) in;
 // slabs around 2Q are averaged ¼ ½ ¼ per axis. Radiance seen from the dark side of a wall is then
 // what lies on that side, and light behind a pillar is hidden only behind it. Only the samples the
 // node owns (shared_samples.glsl); radiance_share.comp copies the others.
+// A work group takes one node (ListDispatch with one item per group): its invocations find the
+// nodes and children around it, then where each of the 7³ child samples its bricks can read lies
+// (each found once, not once per sample that reads it), then share the 27 samples × 6 directions.
 #define WORK_LIST_BORDER
 #include "voxel_common.glsl"
 #include "octree.glsl"
@@ -21,60 +24,78 @@ layout(binding = TEXTURE_OPACITY_PLUS) uniform sampler3D uOpacityPlus;    // (τ
 layout(binding = TEXTURE_OPACITY_MINUS) uniform sampler3D uOpacityMinus;  // (τ−x, τ−y, τ−z, ·)
 layout(rgba32f, binding = IMAGE_DIRECTIONAL_RADIANCE) uniform coherent image3D uDirectional;
 
+shared uint sAround[27];
+shared uint sChildren[64];
+shared uint sPresent;
+// Child-lattice point p ∈ [−1, 5]³ (index (p.x+1) + 7(p.y+1) + 49(p.z+1)): where its sample lies
+// in the pool's +x bricks (the other directions' lie a fixed offset along z); w = 0 where no child
+// holds one.
+shared ivec4 sTexel[343];
+
+int latticeIndex(ivec3 p) { return (p.x + 1) + 7 * (p.y + 1) + 49 * (p.z + 1); }
+
 void main() {
     bool valid;
-    uint node = workNode(valid);
-    if (!valid) return;
-    uint around[27];
-    nodesAround(node, around);
-    uint children[64];
-    childrenAround(around, children);
-    uint present = bordersAround(around);
+    uint node = groupWorkNode(valid);
+    if (!valid) return;  // the whole group: the node is the group's
+    uint t = gl_LocalInvocationIndex;
+    if (t < 27u) sAround[t] = nodeAround(node, int(t));
+    barrier();
+    uint slot;
+    uint parent = sAround[childAround(int(t), slot)];
+    sChildren[t] = parent == NONE ? NONE : childOf(parent, slot);
+    if (t == 0u) {  // bordersAround over the shared nodes
+        uint present = 0u;
+        for (int o = 0; o < 27; ++o)
+            if (onBorderNow(sAround[o])) present |= 1u << uint(o);
+        sPresent = present;
+    }
+    barrier();
+    for (uint e = t; e < 343u; e += gl_WorkGroupSize.x) {
+        ivec3 p = ivec3(e % 7u, (e / 7u) % 7u, e / 49u) - 1;
+        ivec4 texel = ivec4(0);
+        for (int k = 0; k < 8; ++k) {
+            ivec3 local;
+            int v = childCandidate(p, k, local);
+            if (v < 0 || sChildren[v] == NONE) continue;
+            texel = ivec4(directionalBrickOrigin(sChildren[v], 0) + local, 1);
+            break;
+        }
+        sTexel[e] = texel;
+    }
+    barrier();
+
+    uint present = sPresent;
     float hChild = float(1 << (uLevels - uLevel - 2));  // the child level's sample spacing, voxels
     ivec3 origin = brickOrigin(node);
     const float w[3] = float[3](0.25, 0.5, 0.25);
-    for (int k = 0; k < 3; ++k)
-        for (int j = 0; j < 3; ++j)
-            for (int x = 0; x < 3; ++x) {
-                ivec3 q = ivec3(x, j, k);
-                if (sampleOwner(q, present) != ivec3(0)) continue;  // radiance_share.comp copies it
-                // Where the 27 child samples around 2Q lie in the pool's +x bricks (the other
-                // directions' lie a fixed offset along z), index (d + 1) · (1, 3, 9); w = 0 where no
-                // child holds one. Only their places are kept (not the six directions' values,
-                // which are read as each direction needs them): a small array, since run-time-indexed
-                // local arrays are slow on some drivers (llvmpipe spills them).
-                ivec4 texels[27];
-                for (int o = 0; o < 27; ++o) {
-                    uint child;
-                    ivec3 local;
-                    bool found = childSampleAt(children, 2 * q + blockCoord3(o) - 1, child, local);
-                    texels[o] = ivec4(found ? directionalBrickOrigin(child, 0) + local : ivec3(0), found ? 1 : 0);
-                }
-                vec4 tauPlus = texelFetch(uOpacityPlus, origin + q, 0), tauMinus = texelFetch(uOpacityMinus, origin + q, 0);
-                for (int i = 0; i < 6; ++i) {
-                    int a = i >> 1;
-                    ivec3 direction = directionOffset(i);
-                    int ahead = (i & 1) == 0 ? aroundStride(a) : -aroundStride(a);
-                    vec3 total = vec3(0.0);
-                    float meanTransmittance = 0.0;
-                    for (int db = -1; db <= 1; ++db)
-                        for (int dc = -1; dc <= 1; ++dc) {
-                            int front = aroundAcross(a, db, dc);
-                            int back = front + ahead;
-                            // The child slab at each: (L·τ, τ), the density of unlit geometry too
-                            // (radiance_clear.comp): it sends L·α and lets 1 − α through.
-                            vec4 frontStored = texels[front].w != 0 ? imageLoad(uDirectional, texels[front].xyz + direction) : vec4(0.0);
-                            vec4 backStored = texels[back].w != 0 ? imageLoad(uDirectional, texels[back].xyz + direction) : vec4(0.0);
-                            float frontAlpha = 1.0 - exp(-frontStored.a * hChild);
-                            float backAlpha = 1.0 - exp(-backStored.a * hChild);
-                            vec3 frontSeen = frontStored.a > 0.0 ? frontStored.rgb * (frontAlpha / frontStored.a) : vec3(0.0);
-                            vec3 backSeen = backStored.a > 0.0 ? backStored.rgb * (backAlpha / backStored.a) : vec3(0.0);
-                            float weight = w[db + 1] * w[dc + 1];
-                            total += weight * (frontSeen + (1.0 - frontAlpha) * backSeen);
-                            meanTransmittance += weight * (1.0 - frontAlpha) * (1.0 - backAlpha);
-                        }
-                    float tau = (i & 1) == 0 ? tauPlus[a] : tauMinus[a];
-                    imageStore(uDirectional, directionalBrickOrigin(node, i) + q, slabRadiance(total, 1.0 - meanTransmittance, tau, 2.0 * hChild));
-                }
+    for (uint work = t; work < 27u * 6u; work += gl_WorkGroupSize.x) {
+        ivec3 q = blockCoord3(int(work / 6u));
+        if (sampleOwner(q, present) != ivec3(0)) continue;  // radiance_share.comp copies it
+        int i = int(work % 6u), a = i >> 1;
+        ivec3 direction = directionOffset(i);
+        int ahead = (i & 1) == 0 ? aroundStride(a) : -aroundStride(a);
+        vec3 total = vec3(0.0);
+        float meanTransmittance = 0.0;
+        for (int db = -1; db <= 1; ++db)
+            for (int dc = -1; dc <= 1; ++dc) {
+                int front = aroundAcross(a, db, dc);
+                int back = front + ahead;
+                ivec4 frontTexel = sTexel[latticeIndex(2 * q + blockCoord3(front) - 1)];
+                ivec4 backTexel = sTexel[latticeIndex(2 * q + blockCoord3(back) - 1)];
+                // The child slab at each: (L·τ, τ), the density of unlit geometry too
+                // (radiance_clear.comp): it sends L·α and lets 1 − α through.
+                vec4 frontStored = frontTexel.w != 0 ? imageLoad(uDirectional, frontTexel.xyz + direction) : vec4(0.0);
+                vec4 backStored = backTexel.w != 0 ? imageLoad(uDirectional, backTexel.xyz + direction) : vec4(0.0);
+                float frontAlpha = 1.0 - exp(-frontStored.a * hChild);
+                float backAlpha = 1.0 - exp(-backStored.a * hChild);
+                vec3 frontSeen = frontStored.a > 0.0 ? frontStored.rgb * (frontAlpha / frontStored.a) : vec3(0.0);
+                vec3 backSeen = backStored.a > 0.0 ? backStored.rgb * (backAlpha / backStored.a) : vec3(0.0);
+                float weight = w[db + 1] * w[dc + 1];
+                total += weight * (frontSeen + (1.0 - frontAlpha) * backSeen);
+                meanTransmittance += weight * (1.0 - frontAlpha) * (1.0 - backAlpha);
             }
+        float tau = (i & 1) == 0 ? texelFetch(uOpacityPlus, origin + q, 0)[a] : texelFetch(uOpacityMinus, origin + q, 0)[a];
+        imageStore(uDirectional, directionalBrickOrigin(node, i) + q, slabRadiance(total, 1.0 - meanTransmittance, tau, 2.0 * hChild));
+    }
 }

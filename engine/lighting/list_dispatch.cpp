@@ -19,17 +19,18 @@ void bindRadianceVolume(const RadianceVolume& v) {
 }
 
 void ListDispatch::dispatch(const gl::ComputeCall& call, const RadianceVolume& volume, unsigned countSlot,
-                            GLbitfield barriers) {
-    dispatch(call, volume.listCounts, countSlot, volume.indirectArgs, countSlot, barriers);
+                            GLbitfield barriers, unsigned itemsPerGroup) {
+    dispatch(call, volume.listCounts, countSlot, volume.indirectArgs, countSlot, barriers, itemsPerGroup);
 }
 
 void ListDispatch::dispatch(const gl::ComputeCall& call, const gl::Buffer& counts, unsigned countSlot,
-                            const gl::Buffer& args, unsigned argsSlot, GLbitfield barriers) {
+                            const gl::Buffer& args, unsigned argsSlot, GLbitfield barriers, unsigned itemsPerGroup) {
     // Only what indirect_args.comp reads is bound: the caller's other bindings (e.g. which
     // channel's cell values sit at SSBO_CELL_RADIANCE) must survive to its own dispatch.
     gl::ComputeCall(args_)
         .uniform("uCountSlot", countSlot)
         .uniform("uArgsSlot", argsSlot)
+        .uniform("uItemsPerGroup", itemsPerGroup)
         .storage(gl::SSBO_LIST_COUNTS, counts)
         .storage(gl::SSBO_INDIRECT_ARGS, args)
         .dispatch(1, 1, 1, GL_COMMAND_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);

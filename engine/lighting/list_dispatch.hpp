@@ -13,12 +13,14 @@ constexpr unsigned kBorderCountSlot = gl::BORDER_COUNT_SLOT;  // + level
 class ListDispatch {
 public:
     ListDispatch();
-    // Dispatches `call`'s program over listCounts[countSlot] items in groups of 64.
-    void dispatch(const gl::ComputeCall& call, const RadianceVolume& volume, unsigned countSlot, GLbitfield barriers);
+    // Dispatches `call`'s program over listCounts[countSlot] items, itemsPerGroup to a work group
+    // (64: one per invocation of a 64-wide group; 1: a whole group per item).
+    void dispatch(const gl::ComputeCall& call, const RadianceVolume& volume, unsigned countSlot, GLbitfield barriers,
+                  unsigned itemsPerGroup = 64);
     // The same for a count kept elsewhere: uints `counts`[countSlot], the dispatch arguments
     // written to `args` at argsSlot (three uints each).
     void dispatch(const gl::ComputeCall& call, const gl::Buffer& counts, unsigned countSlot, const gl::Buffer& args,
-                  unsigned argsSlot, GLbitfield barriers);
+                  unsigned argsSlot, GLbitfield barriers, unsigned itemsPerGroup = 64);
 
 private:
     gl::Program args_;

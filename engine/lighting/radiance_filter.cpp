@@ -62,7 +62,7 @@ void RadianceFilter::leaves(const Octree& octree, RadianceVolume& volume) {
         .texture(gl::TEXTURE_OPACITY_PLUS, octree.brickOpacityPlus.id())
         .texture(gl::TEXTURE_OPACITY_MINUS, octree.brickOpacityMinus.id());
     bindDirectionalImage(call, volume, GL_WRITE_ONLY);
-    listDispatch_.dispatch(call, volume, kBorderCountSlot + unsigned(leafLevel), kBarrier);
+    listDispatch_.dispatch(call, volume, kBorderCountSlot + unsigned(leafLevel), kBarrier, 1);  // a group per node
     gl::checkErrors("filling the leaves' radiance bricks");
 }
 
@@ -72,7 +72,7 @@ void RadianceFilter::mip(const Octree& octree, RadianceVolume& volume) {
         call.texture(gl::TEXTURE_OPACITY_PLUS, octree.brickOpacityPlus.id())
             .texture(gl::TEXTURE_OPACITY_MINUS, octree.brickOpacityMinus.id());
         bindDirectionalImage(call, volume, GL_READ_WRITE);
-        listDispatch_.dispatch(call, volume, kBorderCountSlot + unsigned(level), kBarrier);
+        listDispatch_.dispatch(call, volume, kBorderCountSlot + unsigned(level), kBarrier, 1);  // a group per node
         shareSamples(octree, volume, level);
     }
     gl::checkErrors("filtering radiance up the octree by direction");
