@@ -7,7 +7,8 @@
 # gpu.sh wrote, the picture, the ctest log and steps.log, the one-line account of each step. The
 # archive is written again after every step, so a run stopped at the machine's time limit still
 # brings back what the finished steps measured; if EGL renders nothing the run stops there.
-# Tests that need OSMesa or Embree fail there by construction (the stubs); the rest must pass.
+# Tests that need OSMesa or Embree fail there by construction (the stubs); the rest must pass:
+# steps.log names them.
 set -uo pipefail
 cd "$(dirname "$0")/.."
 root=$PWD
@@ -57,4 +58,18 @@ step "determinism: three renders of Sponza's indirect light, $hashes distinct ha
 start=$SECONDS
 (cd build && timeout 150 ctest -j"$(nproc)" --output-on-failure --timeout 100) >"$out/ctest.log" 2>&1
 step "ctest: exit $? in $((SECONDS - start)) s: $(grep -E 'tests passed|tests failed' "$out/ctest.log")"
+# Each failed test by its cause: the output ctest prints after a failure names the stub it hit.
+step "ctest failures: $(awk '
+    function flush() {
+        if (name != "") { if (cause == "") other = other " " name; else count[cause]++ }
+        name = ""; cause = ""
+    }
+    /^ *[0-9]+\/[0-9]+ Test +#[0-9]+: / { flush(); if ($0 ~ /\*\*\*Failed/) name = $4; next }
+    name != "" && cause == "" && /Embree/ { cause = "Embree" }
+    name != "" && cause == "" && /OSMesa|osmesa/ { cause = "OSMesa" }
+    END {
+        flush()
+        printf "%d on the Embree stub, %d on the OSMesa stub", count["Embree"], count["OSMesa"]
+        if (other != "") printf "; other:%s", other; else printf "; no other"
+    }' "$out/ctest.log")"
 rm -rf "$out"
