@@ -1,5 +1,9 @@
 #version 450
-layout(local_size_x = 64) in;
+// Invocations per node's work group (radiance_filter.cpp picks it for the device).
+#ifndef NODE_GROUP_SIZE
+#define NODE_GROUP_SIZE 64
+#endif
+layout(local_size_x = NODE_GROUP_SIZE) in;
 // radiance_leaves: the leaf level's radiance, seen along each of the six axis directions, for the
 // leaves beside light (the border list: the touched leaves and their 3³ neighbours; the rest keep
 // what radiance_clear wrote: no light). Along ±a, a sample's slab (brick_layout.hpp, "Slabs";
@@ -8,8 +12,8 @@ layout(local_size_x = 64) in;
 // voxel's radiance L times the share of it that leaves against ±a (facing.glsl).
 // Stored premultiplied by the slab's density (radiance_common.glsl, slabRadiance).
 // A work group takes one node (ListDispatch with one item per group): its invocations find the
-// 27 nodes around it, then each reads one of the 4×4×4 voxels around it into shared memory, then
-// they share the node's 27 samples × 6 directions. One invocation per node holding those voxels
+// 27 nodes around it, then read the 4×4×4 voxels around it into shared memory, then share the
+// node's 27 samples × 6 directions. One invocation per node holding those voxels
 // in its own arrays (3 KB) ran twice as long on a GPU, which keeps such arrays in slow memory.
 #define WORK_LIST_BORDER
 #include "voxel_common.glsl"
@@ -35,26 +39,28 @@ void main() {
     uint node = groupWorkNode(valid);
     if (!valid) return;  // the whole group: the node is the group's
     uint t = gl_LocalInvocationIndex;
-    if (t < 27u) sAround[t] = nodeAround(node, int(t));
+    for (uint o = t; o < 27u; o += gl_WorkGroupSize.x) sAround[o] = nodeAround(node, int(o));
     barrier();
 
-    // Voxel t of the 4×4×4 block around the node, in gatherChildren's order.
-    uint slot;
-    uint parent = sAround[childAround(int(t), slot)];
-    uint child = parent == NONE ? NONE : childOf(parent, slot);
-    vec3 opacity = vec3(0.0), outgoing = vec3(0.0);
-    float shares[6] = float[6](0.0, 0.0, 0.0, 0.0, 0.0, 0.0);
-    if (child != NONE) {
-        uint index = child - uLevelStart[uLevels];
-        opacity = min(unpackUnorm4x8(cellOpacity[index]).xyz, vec3(MAX_OPACITY));
-        vec4 radiance = cellRadiance[index];
-        if (radiance.a > 0.0) {
-            outgoing = radiance.rgb / radiance.a;
-            exitShares(index, shares);
+    // The 4×4×4 voxels around the node, in gatherChildren's order.
+    for (uint v = t; v < 64u; v += gl_WorkGroupSize.x) {
+        uint slot;
+        uint parent = sAround[childAround(int(v), slot)];
+        uint child = parent == NONE ? NONE : childOf(parent, slot);
+        vec3 opacity = vec3(0.0), outgoing = vec3(0.0);
+        float shares[6] = float[6](0.0, 0.0, 0.0, 0.0, 0.0, 0.0);
+        if (child != NONE) {
+            uint index = child - uLevelStart[uLevels];
+            opacity = min(unpackUnorm4x8(cellOpacity[index]).xyz, vec3(MAX_OPACITY));
+            vec4 radiance = cellRadiance[index];
+            if (radiance.a > 0.0) {
+                outgoing = radiance.rgb / radiance.a;
+                exitShares(index, shares);
+            }
         }
+        for (int i = 0; i < 6; ++i) sSent[v][i] = opacity[i >> 1] * outgoing * shares[i];
+        for (int a = 0; a < 3; ++a) sClear[v][a] = 1.0 - opacity[a];
     }
-    for (int i = 0; i < 6; ++i) sSent[t][i] = opacity[i >> 1] * outgoing * shares[i];
-    for (int a = 0; a < 3; ++a) sClear[t][a] = 1.0 - opacity[a];
     barrier();
 
     ivec3 origin = brickOrigin(node);

@@ -1,5 +1,9 @@
 #version 450
-layout(local_size_x = 64) in;
+// Invocations per node's work group (radiance_filter.cpp picks it for the device).
+#ifndef NODE_GROUP_SIZE
+#define NODE_GROUP_SIZE 64
+#endif
+layout(local_size_x = NODE_GROUP_SIZE) in;
 // radiance_mip: the radiance of one level above the leaves, seen along each of the six axis
 // directions (brick_layout.hpp, "Slabs"), for the nodes beside light (the border list). Along +a,
 // a sample's slab is two child slabs long (at 2Q, then 2Q + 1 along a), composited front to back:
@@ -39,11 +43,13 @@ void main() {
     uint node = groupWorkNode(valid);
     if (!valid) return;  // the whole group: the node is the group's
     uint t = gl_LocalInvocationIndex;
-    if (t < 27u) sAround[t] = nodeAround(node, int(t));
+    for (uint o = t; o < 27u; o += gl_WorkGroupSize.x) sAround[o] = nodeAround(node, int(o));
     barrier();
-    uint slot;
-    uint parent = sAround[childAround(int(t), slot)];
-    sChildren[t] = parent == NONE ? NONE : childOf(parent, slot);
+    for (uint v = t; v < 64u; v += gl_WorkGroupSize.x) {
+        uint slot;
+        uint parent = sAround[childAround(int(v), slot)];
+        sChildren[v] = parent == NONE ? NONE : childOf(parent, slot);
+    }
     if (t == 0u) {  // bordersAround over the shared nodes
         uint present = 0u;
         for (int o = 0; o < 27; ++o)

@@ -46,3 +46,14 @@ TEST(DriverChecks, RebuildsThatKeepTheirStorageWriteAllOfIt) {
     EXPECT_EQ(renderBytes(dir, "rebuilt", "VCT_GL_POISON=1", "--frames 3 --full-frames"), once)
         << "a rebuild reads storage the previous build left";
 }
+
+TEST(DriverChecks, EveryNodeGroupSizeGivesTheSameBits) {
+    // The radiance filter gives each node a work group whose size vct picks for the device (8 on
+    // llvmpipe, 64 on a GPU): a GPU's size, and one invocation per node, must give this machine's
+    // image, bit for bit (two bounces run the filter over every voxel).
+    const auto dir = vct::test::testDir();
+    const std::string chosen = renderBytes(dir, "chosen", "");
+    ASSERT_GT(chosen.size(), 48u * 36u * 12u);
+    EXPECT_EQ(renderBytes(dir, "size64", "VCT_NODE_GROUP_SIZE=64"), chosen);
+    EXPECT_EQ(renderBytes(dir, "size1", "VCT_NODE_GROUP_SIZE=1"), chosen);
+}

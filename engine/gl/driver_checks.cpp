@@ -21,6 +21,14 @@ bool poisonNewStorage() {
     return poison;
 }
 
+bool cpuRasterizer() {
+    const char* renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
+    if (!renderer) return false;
+    for (const char* name : {"llvmpipe", "softpipe", "SwiftShader"})
+        if (std::strstr(renderer, name)) return true;
+    return false;
+}
+
 void poisonNewTexture(GLuint texture, GLenum internalFormat, int levels) {
     if (!poisonNewStorage()) return;
     const GLuint integers[4] = {0x7F7F7F7Fu, 0x7F7F7F7Fu, 0x7F7F7F7Fu, 0x7F7F7F7Fu};
