@@ -24,9 +24,13 @@ layout(std430, binding = SSBO_BOUNCE_LIST) buffer BounceList { uint ownGatherCel
 // its gather: the first pass (GATHER_FIRST_CHILDREN) gathers for the first child of every parent
 // and keeps its irradiance, the second (SHARE_WITH_SIBLINGS) gives each other cell that
 // irradiance when their normals agree within ~25° (cos ≥ kShareCosine; opposite normals share
-// with their sides swapped) and lists it otherwise (a corner, an edge of two surfaces), and the
-// third (GATHER_LISTED) gathers for the listed cells. Listing them first keeps every invocation
-// of a gather busy: scattered among cells that only copy, each would hold up its whole SIMD group.
+// with their sides swapped). Of the cells that do not (an edge of two surfaces, a corner), the
+// first in slot order is the parent's second gatherer: it is listed, with every cell that agrees
+// with neither, and the third pass (GATHER_LISTED) gathers for the listed cells and keeps their
+// irradiance; the cells that agree with the second gatherer are listed apart (from the list's
+// end) and take its irradiance in the fourth (SHARE_WITH_SECOND). Listing them first keeps every
+// invocation of a gather busy: scattered among cells that only copy, each would hold up its whole
+// SIMD group.
 // Siblings lie within a voxel of each other and cones start 1.5 voxels off the surface, so a
 // shared gather differs from the cell's own by far less than the cones' own blur.
 const float kShareCosine = 0.9;
@@ -55,6 +59,28 @@ void storeBounced(uint cell, uint cellCount, uint node, vec4 albedo, vec3 normal
     touch(node, uLevels);
 }
 
+// The irradiance that `gatherer` kept (GATHER_FIRST_CHILDREN, GATHER_LISTED), for a cell of
+// normal `normal`: true when their normals agree (sides swapped for opposite normals).
+bool sharedIrradiance(uint gatherer, uint cellCount, vec3 normal, out vec3 irradiance[2]) {
+    float agreement = dot(normal, unpackNormal(cellNormal[gatherer]));
+    if (abs(agreement) < kShareCosine) return false;
+    int flip = agreement < 0.0 ? 1 : 0;
+    irradiance[0] = bounceBase[3u * cellCount + 2u * gatherer + uint(flip)].rgb;
+    irradiance[1] = bounceBase[3u * cellCount + 2u * gatherer + uint(1 - flip)].rgb;
+    return true;
+}
+
+// The second gatherer among the cells of leaf node `parent`: the first, in slot order, whose
+// normal does not agree with the first child's (NONE when every cell agrees). A cell index.
+uint secondGatherer(uint parent) {
+    uint first = nodeChild[parent] - uLevelStart[uLevels];
+    vec3 firstNormal = unpackNormal(cellNormal[first]);
+    uint cells = uint(bitCount(nodeMask[parent]));
+    for (uint k = 1u; k < cells; ++k)
+        if (abs(dot(unpackNormal(cellNormal[first + k]), firstNormal)) < kShareCosine) return first + k;
+    return NONE;
+}
+
 void main() {
     uint cellCount = uLevelCount[uLevels];
 #ifdef GATHER_FIRST_CHILDREN
@@ -70,6 +96,11 @@ void main() {
     uint node = uLevelStart[uLevels] + cell;
     uint firstSibling = nodeChild[nodeParent[node]];
     if (firstSibling == node) return;
+#elif defined(SHARE_WITH_SECOND)
+    uint listed = linearInvocation();
+    if (listed >= listCounts[SECOND_SHARE_COUNT_SLOT]) return;
+    uint cell = ownGatherCells[cellCount - 1u - listed];
+    uint node = uLevelStart[uLevels] + cell;
 #else  // GATHER_LISTED
     uint listed = linearInvocation();
     if (listed >= listCounts[BOUNCE_LIST_COUNT_SLOT]) return;
@@ -79,16 +110,17 @@ void main() {
     vec4 albedo = unpackUnorm4x8(cellAlbedo[cell]);
     vec3 normal = unpackNormal(cellNormal[cell]);
     vec3 irradiance[2];
-#ifdef SHARE_WITH_SIBLINGS
-    uint sibling = firstSibling - uLevelStart[uLevels];
-    float agreement = dot(normal, unpackNormal(cellNormal[sibling]));
-    if (abs(agreement) < kShareCosine) {
-        ownGatherCells[atomicAdd(listCounts[BOUNCE_LIST_COUNT_SLOT], 1u)] = cell;
+#if defined(SHARE_WITH_SIBLINGS)
+    if (!sharedIrradiance(firstSibling - uLevelStart[uLevels], cellCount, normal, irradiance)) {
+        uint second = secondGatherer(nodeParent[node]);
+        if (second != cell && abs(dot(normal, unpackNormal(cellNormal[second]))) >= kShareCosine)
+            ownGatherCells[cellCount - 1u - atomicAdd(listCounts[SECOND_SHARE_COUNT_SLOT], 1u)] = cell;
+        else
+            ownGatherCells[atomicAdd(listCounts[BOUNCE_LIST_COUNT_SLOT], 1u)] = cell;
         return;
     }
-    int flip = agreement < 0.0 ? 1 : 0;
-    irradiance[0] = bounceBase[3u * cellCount + 2u * sibling + uint(flip)].rgb;
-    irradiance[1] = bounceBase[3u * cellCount + 2u * sibling + uint(1 - flip)].rgb;
+#elif defined(SHARE_WITH_SECOND)
+    sharedIrradiance(secondGatherer(nodeParent[node]), cellCount, normal, irradiance);
 #else
     vec3 centre = vec3(unpackCell(nodeCoord[node])) + 0.5;
     for (int side = 0; side < 2; ++side) {
@@ -97,7 +129,7 @@ void main() {
         irradiance[side] = gatherIrradiance(centre + n * uConeOffset, n, n, vec2(0.0)).rgb;
     }
 #endif
-#ifdef GATHER_FIRST_CHILDREN
+#if defined(GATHER_FIRST_CHILDREN) || defined(GATHER_LISTED)
     bounceBase[3u * cellCount + 2u * cell] = vec4(irradiance[0], 0.0);
     bounceBase[3u * cellCount + 2u * cell + 1u] = vec4(irradiance[1], 0.0);
 #endif

@@ -92,7 +92,8 @@
     X(BORDER_COUNT_SLOT, 12)         /* list counts: touched [0, 12), border [12, 24) */          \
     X(MISSED_COUNT_SLOT, 24)         /* list counts: photons that found no voxel */               \
     X(BOUNCE_LIST_COUNT_SLOT, 25)    /* list counts: cells that gather their own bounce */        \
-    X(LIST_COUNT_SLOTS, 26)
+    X(SECOND_SHARE_COUNT_SLOT, 26)   /* list counts: cells that share a leaf's second gather */    \
+    X(LIST_COUNT_SLOTS, 27)
 // clang-format on
 
 #include "gl/gl.hpp"

@@ -9,7 +9,8 @@ namespace vct {
 BounceGather::BounceGather()
     : gatherFirstChildren_(gl::buildProgram({{GL_COMPUTE_SHADER, "bounce_gather.comp"}}, {"GATHER_FIRST_CHILDREN 1"})),
       shareWithSiblings_(gl::buildProgram({{GL_COMPUTE_SHADER, "bounce_gather.comp"}}, {"SHARE_WITH_SIBLINGS 1"})),
-      gatherListed_(gl::buildProgram({{GL_COMPUTE_SHADER, "bounce_gather.comp"}}, {"GATHER_LISTED 1"})) {}
+      gatherListed_(gl::buildProgram({{GL_COMPUTE_SHADER, "bounce_gather.comp"}}, {"GATHER_LISTED 1"})),
+      shareWithSecond_(gl::buildProgram({{GL_COMPUTE_SHADER, "bounce_gather.comp"}}, {"SHARE_WITH_SECOND 1"})) {}
 
 void BounceGather::run(const Octree& octree, RadianceVolume& volume, RadianceFilter& filter, int bounces,
                        const ConeSettings& cones) {
@@ -28,9 +29,10 @@ void BounceGather::run(const Octree& octree, RadianceVolume& volume, RadianceFil
     constexpr GLbitfield kBarrier = GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT;
     const ConeSettings bounceCones = voxelGatherCones(cones);
     for (int bounce = 2; bounce <= bounces; ++bounce) {
-        clearListCounts(volume, gl::BOUNCE_LIST_COUNT_SLOT, gl::BOUNCE_LIST_COUNT_SLOT + 1);
+        clearListCounts(volume, gl::BOUNCE_LIST_COUNT_SLOT, gl::SECOND_SHARE_COUNT_SLOT + 1);
         // First children (one per leaf node), then their siblings (one per cell), which read what
-        // the first children gathered or list themselves, then the listed cells.
+        // the first children gathered or list themselves, then the listed cells, then the cells
+        // that take what a leaf's second gatherer (a listed cell) gathered.
         auto prepare = [&](const gl::Program& program) {
             gl::ComputeCall call(program);
             setConeMarchUniforms(call, octree, volume, bounceCones);
@@ -44,6 +46,7 @@ void BounceGather::run(const Octree& octree, RadianceVolume& volume, RadianceFil
         prepare(gatherFirstChildren_).dispatch1D(std::uint32_t(octree.leafCount()), 64, kBarrier);
         prepare(shareWithSiblings_).dispatch1D(std::uint32_t(cells), 64, kBarrier);
         listDispatch_.dispatch(prepare(gatherListed_), volume, gl::BOUNCE_LIST_COUNT_SLOT, kBarrier);
+        listDispatch_.dispatch(prepare(shareWithSecond_), volume, gl::SECOND_SHARE_COUNT_SLOT, kBarrier);
         filter.leaves(octree, volume);
         filter.mip(octree, volume);
     }

@@ -6,7 +6,8 @@
 // (RadianceFilter): after N − 1 of these the bricks hold N bounces. The voxels' own radiance is
 // put back to the first bounce at the end, so that the radiance filter alone (after a change of
 // the bounce count) gives one bounce again. Cells whose parent's first child has nearly their
-// normal take that child's gathered irradiance; the others are listed and gather their own.
+// normal take that child's gathered irradiance; of the others, those that agree with the parent's
+// second gatherer take its irradiance, and the rest gather their own.
 #include "gl/objects.hpp"
 #include "lighting/list_dispatch.hpp"
 #include "lighting/radiance_filter.hpp"
@@ -28,12 +29,14 @@ public:
     std::uint32_t ownGathers(const RadianceVolume& volume) const;
 
 private:
-    gl::Program gatherFirstChildren_, shareWithSiblings_, gatherListed_;
+    gl::Program gatherFirstChildren_, shareWithSiblings_, gatherListed_, shareWithSecond_;
     ListDispatch listDispatch_;
     // The first bounce, (L·τ, τ) then (N·τ, τ) of every cell, then the irradiance on both sides
     // of every cell (written for first children).
     gl::Buffer base_;
-    gl::Buffer ownGatherCells_;  // the cells that gather their own (SHARE_WITH_SIBLINGS lists them), one uint each
+    // The cells that gather their own from the front, those that share a leaf's second gather
+    // from the end (SHARE_WITH_SIBLINGS lists both), one uint each.
+    gl::Buffer ownGatherCells_;
     std::size_t baseBytes_ = 0, listBytes_ = 0;
 };
 
