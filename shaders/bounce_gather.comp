@@ -59,6 +59,17 @@ void storeBounced(uint cell, uint cellCount, uint node, vec4 albedo, vec3 normal
     touch(node, uLevels);
 }
 
+// Whether the side of a voxel's surface that faces `n` looks into solid geometry: the voxel next
+// to it that way is occupied and mostly opaque, as behind the surface of anything thicker than a
+// voxel. That side receives no light (its cones would start inside the solid and gather what
+// lies beyond it); a sheet one voxel thick has empty voxels on both sides and gathers on both.
+bool facesSolid(vec3 centre, vec3 n) {
+    vec3 next = centre + n;
+    if (any(lessThan(next, vec3(0.0))) || any(greaterThanEqual(next, vec3(float(1 << uLevels))))) return false;
+    uint neighbour = findNode(uvec3(next), uLevels);
+    return neighbour != NONE && unpackUnorm4x8(cellAlbedo[neighbour - uLevelStart[uLevels]]).a >= 0.5;
+}
+
 // The irradiance that `gatherer` kept (GATHER_FIRST_CHILDREN, GATHER_LISTED), for a cell of
 // normal `normal`: true when their normals agree (sides swapped for opposite normals).
 bool sharedIrradiance(uint gatherer, uint cellCount, vec3 normal, out vec3 irradiance[2]) {
@@ -126,7 +137,7 @@ void main() {
     for (int side = 0; side < 2; ++side) {
         vec3 n = side == 0 ? normal : -normal;
         // The cone set (voxelGatherCones): no narrow cones to shift.
-        irradiance[side] = gatherIrradiance(centre + n * uConeOffset, n, n, vec2(0.0)).rgb;
+        irradiance[side] = facesSolid(centre, n) ? vec3(0.0) : gatherIrradiance(centre + n * uConeOffset, n, n, vec2(0.0)).rgb;
     }
 #endif
 #if defined(GATHER_FIRST_CHILDREN) || defined(GATHER_LISTED)
