@@ -1,5 +1,5 @@
 #version 450
-// Invocations per node's work group (radiance_filter.cpp picks it for the device).
+// Invocations per node's work group (node_group.glsl), before any use of gl_WorkGroupSize.
 #ifndef NODE_GROUP_SIZE
 #define NODE_GROUP_SIZE 64
 #endif
@@ -11,9 +11,9 @@ layout(local_size_x = NODE_GROUP_SIZE) in;
 // mean over them of the radiance that leaves each towards it times its opacity along a: the
 // voxel's radiance L times the share of it that leaves against ±a (facing.glsl).
 // Stored premultiplied by the slab's density (radiance_common.glsl, slabRadiance).
-// A work group takes one node (ListDispatch with one item per group): its invocations find the
-// 27 nodes around it, then read the 4×4×4 voxels around it into shared memory, then share the
-// node's 27 samples × 6 directions. One invocation per node holding those voxels
+// A work group takes one node (node_group.glsl): its invocations find the 27 nodes around it, then
+// read the 4×4×4 voxels around it into shared memory, then share the node's 27 samples × 6
+// directions. One invocation per node holding those voxels
 // in its own arrays (3 KB) ran twice as long on a GPU, which keeps such arrays in slow memory.
 #define WORK_LIST_BORDER
 #include "voxel_common.glsl"
@@ -23,6 +23,7 @@ layout(local_size_x = NODE_GROUP_SIZE) in;
 #include "radiance_common.glsl"
 #include "work_list.glsl"
 #include "brick_gather.glsl"
+#include "node_group.glsl"
 #include "facing.glsl"
 
 layout(std430, binding = SSBO_CELL_OPACITY) buffer CellOpacity { uint cellOpacity[]; };  // RGBA8 (αx, αy, αz, α)
@@ -30,7 +31,6 @@ layout(binding = TEXTURE_OPACITY_PLUS) uniform sampler3D uOpacityPlus;
 layout(binding = TEXTURE_OPACITY_MINUS) uniform sampler3D uOpacityMinus;
 layout(rgba32f, binding = IMAGE_DIRECTIONAL_RADIANCE) uniform writeonly image3D uDirectional;
 
-shared uint sAround[27];
 shared vec3 sSent[64][6];      // what each voxel sends towards each direction through its opacity
 shared float sClear[64][3];    // 1 − its opacity along each axis
 
@@ -39,14 +39,12 @@ void main() {
     uint node = groupWorkNode(valid);
     if (!valid) return;  // the whole group: the node is the group's
     uint t = gl_LocalInvocationIndex;
-    for (uint o = t; o < 27u; o += gl_WorkGroupSize.x) sAround[o] = nodeAround(node, int(o));
+    findNodesAroundTogether(node);
     barrier();
 
     // The 4×4×4 voxels around the node, in gatherChildren's order.
     for (uint v = t; v < 64u; v += gl_WorkGroupSize.x) {
-        uint slot;
-        uint parent = sAround[childAround(int(v), slot)];
-        uint child = parent == NONE ? NONE : childOf(parent, slot);
+        uint child = sharedChildAround(int(v));
         vec3 opacity = vec3(0.0), outgoing = vec3(0.0);
         float shares[6] = float[6](0.0, 0.0, 0.0, 0.0, 0.0, 0.0);
         if (child != NONE) {

@@ -1,5 +1,5 @@
 #version 450
-// Invocations per node's work group (radiance_filter.cpp picks it for the device).
+// Invocations per node's work group (node_group.glsl), before any use of gl_WorkGroupSize.
 #ifndef NODE_GROUP_SIZE
 #define NODE_GROUP_SIZE 64
 #endif
@@ -11,8 +11,8 @@ layout(local_size_x = NODE_GROUP_SIZE) in;
 // slabs around 2Q are averaged ¼ ½ ¼ per axis. Radiance seen from the dark side of a wall is then
 // what lies on that side, and light behind a pillar is hidden only behind it. Only the samples the
 // node owns (shared_samples.glsl); radiance_share.comp copies the others.
-// A work group takes one node (ListDispatch with one item per group): its invocations find the
-// nodes and children around it, then where each of the 7³ child samples its bricks can read lies
+// A work group takes one node (node_group.glsl): its invocations find the nodes and children
+// around it, then where each of the 7³ child samples its bricks can read lies
 // (each found once, not once per sample that reads it), then share the 27 samples × 6 directions.
 #define WORK_LIST_BORDER
 #include "voxel_common.glsl"
@@ -22,13 +22,13 @@ layout(local_size_x = NODE_GROUP_SIZE) in;
 #include "radiance_common.glsl"
 #include "work_list.glsl"
 #include "brick_gather.glsl"
+#include "node_group.glsl"
 #include "shared_samples.glsl"
 
 layout(binding = TEXTURE_OPACITY_PLUS) uniform sampler3D uOpacityPlus;    // (τ+x, τ+y, τ+z, ·)
 layout(binding = TEXTURE_OPACITY_MINUS) uniform sampler3D uOpacityMinus;  // (τ−x, τ−y, τ−z, ·)
 layout(rgba32f, binding = IMAGE_DIRECTIONAL_RADIANCE) uniform coherent image3D uDirectional;
 
-shared uint sAround[27];
 shared uint sChildren[64];
 shared uint sPresent;
 // Child-lattice point p ∈ [−1, 5]³ (index (p.x+1) + 7(p.y+1) + 49(p.z+1)): where its sample lies
@@ -43,13 +43,9 @@ void main() {
     uint node = groupWorkNode(valid);
     if (!valid) return;  // the whole group: the node is the group's
     uint t = gl_LocalInvocationIndex;
-    for (uint o = t; o < 27u; o += gl_WorkGroupSize.x) sAround[o] = nodeAround(node, int(o));
+    findNodesAroundTogether(node);
     barrier();
-    for (uint v = t; v < 64u; v += gl_WorkGroupSize.x) {
-        uint slot;
-        uint parent = sAround[childAround(int(v), slot)];
-        sChildren[v] = parent == NONE ? NONE : childOf(parent, slot);
-    }
+    for (uint v = t; v < 64u; v += gl_WorkGroupSize.x) sChildren[v] = sharedChildAround(int(v));
     if (t == 0u) {  // bordersAround over the shared nodes
         uint present = 0u;
         for (int o = 0; o < 27; ++o)
@@ -60,7 +56,7 @@ void main() {
     for (uint e = t; e < 343u; e += gl_WorkGroupSize.x) {
         ivec3 p = ivec3(e % 7u, (e / 7u) % 7u, e / 49u) - 1;
         ivec4 texel = ivec4(0);
-        for (int k = 0; k < 8; ++k) {
+        for (int k = 0; k < 8; ++k) {  // childSampleAt over the shared children
             ivec3 local;
             int v = childCandidate(p, k, local);
             if (v < 0 || sChildren[v] == NONE) continue;

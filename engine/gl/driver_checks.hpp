@@ -17,14 +17,14 @@ void memoryBarrier(GLbitfield barriers);
 
 // Whether VCT_GL_POISON asks new buffers to be filled with the poison byte.
 bool poisonNewStorage();
-
-// Whether the current context renders on the CPU (Mesa's llvmpipe or softpipe, SwiftShader), from
-// GL_RENDERER: passes whose best layout differs between a CPU and a GPU ask.
-bool cpuRasterizer();
 inline constexpr unsigned char kPoisonByte = 0x7F;
 
 // Under VCT_GL_POISON, fills every level of a texture just allocated with storage of
 // `internalFormat` with the poison value of its kind; otherwise does nothing.
 void poisonNewTexture(GLuint texture, GLenum internalFormat, int levels);
+
+// Whether the current context renders on the CPU (Mesa's llvmpipe or softpipe, SwiftShader), from
+// GL_RENDERER: passes whose best layout differs between a CPU and a GPU ask.
+bool cpuRasterizer();
 
 }  // namespace vct::gl

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 #include "core/error.hpp"
 #include "gl/compute.hpp"
@@ -68,18 +69,15 @@ std::size_t brickPoolBytes(glm::ivec3 b, std::size_t bytesPerTexel) {
 }
 
 void fitBrickPools(Octree& octree) {
-    const bool had = bool(octree.brickAlbedo);
-    const glm::ivec3 before = octree.brickPoolBricks;
-    fitBrickPool(octree.brickAlbedo, octree.brickPoolBricks, octree.nodeCount, "nodes", 1, GL_RGBA16F,
-                 "brick pool albedo/opacity");
-    if (had && octree.brickPoolBricks == before && octree.brickOpacityPlus && octree.brickOpacityMinus) {
-        gl::poisonNewTexture(octree.brickOpacityPlus.id(), GL_RGBA16F, 1);
-        gl::poisonNewTexture(octree.brickOpacityMinus.id(), GL_RGBA16F, 1);
-    } else {  // the opacity pools share the albedo pool's layout
-        octree.brickOpacityPlus.reset();
-        octree.brickOpacityMinus.reset();
-        octree.brickOpacityPlus = createBrickPool(octree.brickPoolBricks, GL_RGBA16F, "brick pool opacity +x +y +z");
-        octree.brickOpacityMinus = createBrickPool(octree.brickPoolBricks, GL_RGBA16F, "brick pool opacity -x -y -z");
+    // The three pools share one layout: the one they were made with, until fitBrickPool changes it.
+    const glm::ivec3 held = octree.brickPoolBricks;
+    const std::pair<gl::Texture*, const char*> pools[] = {{&octree.brickAlbedo, "brick pool albedo/opacity"},
+                                                          {&octree.brickOpacityPlus, "brick pool opacity +x +y +z"},
+                                                          {&octree.brickOpacityMinus, "brick pool opacity -x -y -z"}};
+    for (const auto& [pool, label] : pools) {
+        glm::ivec3 layout = held;
+        fitBrickPool(*pool, layout, octree.nodeCount, "nodes", 1, GL_RGBA16F, label);
+        octree.brickPoolBricks = layout;
     }
     gl::fitBuffer(octree.rawValue, GLsizeiptr(std::max<std::uint32_t>(octree.nodeCount, 1)) * 16, 0, "node raw values");
 }
