@@ -70,6 +70,22 @@ bool facesSolid(vec3 centre, vec3 n) {
     return neighbour != NONE && unpackUnorm4x8(cellAlbedo[neighbour - uLevelStart[uLevels]]).a >= 0.5;
 }
 
+// Whether a cell of leaf node `parent` other than `gatherer` (normal `normal`) would take the
+// gatherer's irradiance on its side towards `n` and does not face a solid that way.
+bool siblingTakesSide(uint parent, uint gatherer, vec3 normal, vec3 n) {
+    uint first = nodeChild[parent] - uLevelStart[uLevels];
+    uint cells = uint(bitCount(nodeMask[parent]));
+    for (uint k = 0u; k < cells; ++k) {
+        uint sibling = first + k;
+        if (sibling == gatherer) continue;
+        vec3 siblingNormal = unpackNormal(cellNormal[sibling]);
+        if (abs(dot(siblingNormal, normal)) < kShareCosine) continue;
+        vec3 centre = vec3(unpackCell(nodeCoord[uLevelStart[uLevels] + sibling])) + 0.5;
+        if (!facesSolid(centre, dot(siblingNormal, n) >= 0.0 ? siblingNormal : -siblingNormal)) return true;
+    }
+    return false;
+}
+
 // The irradiance that `gatherer` kept (GATHER_FIRST_CHILDREN, GATHER_LISTED), for a cell of
 // normal `normal`: true when their normals agree (sides swapped for opposite normals).
 bool sharedIrradiance(uint gatherer, uint cellCount, vec3 normal, out vec3 irradiance[2]) {
@@ -120,6 +136,7 @@ void main() {
 #endif
     vec4 albedo = unpackUnorm4x8(cellAlbedo[cell]);
     vec3 normal = unpackNormal(cellNormal[cell]);
+    vec3 centre = vec3(unpackCell(nodeCoord[node])) + 0.5;
     vec3 irradiance[2];
 #if defined(SHARE_WITH_SIBLINGS)
     if (!sharedIrradiance(firstSibling - uLevelStart[uLevels], cellCount, normal, irradiance)) {
@@ -133,16 +150,23 @@ void main() {
 #elif defined(SHARE_WITH_SECOND)
     sharedIrradiance(secondGatherer(nodeParent[node]), cellCount, normal, irradiance);
 #else
-    vec3 centre = vec3(unpackCell(nodeCoord[node])) + 0.5;
+    // A side that faces a solid receives nothing, but a gatherer still gathers it where a sibling
+    // that takes its irradiance does not face a solid that way: a surface that spans two voxel
+    // layers has its inner layer facing the outer one, whose cells share the inner cell's gather.
+    // The cones then start beyond the outer layer, where the outer cells' own would start.
     for (int side = 0; side < 2; ++side) {
         vec3 n = side == 0 ? normal : -normal;
+        bool gather = !facesSolid(centre, n) || siblingTakesSide(nodeParent[node], cell, normal, n);
         // The cone set (voxelGatherCones): no narrow cones to shift.
-        irradiance[side] = facesSolid(centre, n) ? vec3(0.0) : gatherIrradiance(centre + n * uConeOffset, n, n, vec2(0.0)).rgb;
+        irradiance[side] = gather ? gatherIrradiance(centre + n * uConeOffset, n, n, vec2(0.0)).rgb : vec3(0.0);
     }
 #endif
 #if defined(GATHER_FIRST_CHILDREN) || defined(GATHER_LISTED)
     bounceBase[3u * cellCount + 2u * cell] = vec4(irradiance[0], 0.0);
     bounceBase[3u * cellCount + 2u * cell + 1u] = vec4(irradiance[1], 0.0);
 #endif
+    // Whoever gathered it, a cell's own side that faces a solid receives nothing.
+    for (int side = 0; side < 2; ++side)
+        if (facesSolid(centre, side == 0 ? normal : -normal)) irradiance[side] = vec3(0.0);
     storeBounced(cell, cellCount, node, albedo, normal, irradiance);
 }

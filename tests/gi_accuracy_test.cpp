@@ -400,23 +400,33 @@ TEST(GiAccuracy, SunReachesTheInsideOfAClosedBoxOnlyAlongItsSeams) {
 
 TEST(GiAccuracy, WhiteFurnaceGetsMoreBounces) {
     // The same furnace with 2 and 3 bounces: Le (1 + ρ + ρ²) = 1.75 and 1.875. Each gather loses
-    // what one bounce loses (the test above), and the losses compound.
+    // what one bounce loses (the test above), and the losses compound. Then a furnace whose walls
+    // are solid slabs: the side of a voxel that faces into a wall gathers nothing, but the inner
+    // faces lie on cell faces, in two cells each, and neither may lose its bounces (the cell in
+    // the wall faces the other; when it gathers for both, the other must still get its light).
     const auto dir = test::testDir();
-    const auto model = test::writeFurnace(dir, 0.5f, 1.0f);
+    const std::filesystem::path models[2] = {test::writeFurnace(dir, 0.5f, 1.0f),
+                                             test::writeThickWalledFurnace(dir, 0.5f, 1.0f, 10.0f / 246.0f)};
+    const std::string views[2] = {test::kInsideFurnace, " --eye 0,0.5,0 --target 0,-1,0.01 --fov 70 --width 24 --height 24 "};
     const double expected[2] = {1.75, 1.875};
-    for (int bounces : {2, 3}) {
-        const ImageF image = render(dir, "furnace" + std::to_string(bounces),
-                                    "--scene " + model.string() + test::kInsideFurnace + " --bounces " +
-                                        std::to_string(bounces));
-        double sum = 0.0;
-        for (std::size_t i = 0; i < image.rgba.size(); i += 4)
-            sum += (image.rgba[i] + image.rgba[i + 1] + image.rgba[i + 2]) / 3.0;
-        const double mean = sum / (double(image.width) * image.height), want = expected[bounces - 2];
-        std::printf("[ furnace  ] %d bounces: mean %.4f (%.4f expected, %+.1f %%)\n", bounces, mean, want,
-                    100.0 * (mean / want - 1.0));
-        EXPECT_NEAR(mean, want, kFurnaceBouncesTolerance * want) << bounces << " bounces";
-        EXPECT_LT(mean, want * 1.01) << "more light than the series holds";
-    }
+    for (int m = 0; m < 2; ++m)
+        for (int bounces : {2, 3}) {
+            const ImageF image = render(dir, "furnace" + std::to_string(m) + std::to_string(bounces),
+                                        "--scene " + models[m].string() + views[m] + " --bounces " + std::to_string(bounces));
+            double sum = 0.0, smallest = 1e30;
+            for (std::size_t i = 0; i < image.rgba.size(); i += 4) {
+                const double pixel = (image.rgba[i] + image.rgba[i + 1] + image.rgba[i + 2]) / 3.0;
+                sum += pixel;
+                smallest = std::min(smallest, pixel);
+            }
+            const double mean = sum / (double(image.width) * image.height), want = expected[bounces - 2];
+            std::printf("[ furnace  ] %s walls, %d bounces: mean %.4f, smallest %.4f (%.4f expected, %+.1f %%)\n",
+                        m == 0 ? "thin" : "thick", bounces, mean, smallest, want, 100.0 * (mean / want - 1.0));
+            EXPECT_NEAR(mean, want, kFurnaceBouncesTolerance * want) << bounces << " bounces, model " << m;
+            EXPECT_LT(mean, want * 1.01) << "more light than the series holds";
+            // (The thin box's corners are darker: its seams, frame.md Known limits.)
+            if (m == 1) EXPECT_GT(smallest, want * (1.0 - kFurnaceBouncesTolerance)) << bounces << " bounces";
+        }
 }
 
 TEST(GiAccuracy, MoreBouncesFollowThePathTracerOnCornell) {

@@ -89,6 +89,23 @@ inline std::filesystem::path writeFurnace(const std::filesystem::path& dir, floa
     }
     return dir / "furnace.obj";
 }
+// The same furnace with walls of thickness `thickness` (closed slabs outside the box ±1), so that
+// each inner face has solid behind it. With thickness 10/246 the grid spans ±(1 + 10/246) and
+// at 256³ every inner face lies on a cell face 5 cells in: two cells hold it, one on each side.
+inline std::filesystem::path writeThickWalledFurnace(const std::filesystem::path& dir, float rho, float le,
+                                                     float thickness) {
+    ObjWriter obj;
+    obj.material("wall", glm::vec3(rho), glm::vec3(le));
+    const float outer = 1.0f + thickness;
+    for (int axis = 0; axis < 3; ++axis)
+        for (float side : {-1.0f, 1.0f}) {
+            glm::vec3 lo(-outer), hi(outer);
+            lo[axis] = side < 0.0f ? -outer : 1.0f;
+            hi[axis] = side < 0.0f ? -1.0f : outer;
+            obj.box(lo, hi);
+        }
+    return obj.write(dir, "thick_furnace");
+}
 // A camera inside it, looking at the −z wall (options of vct render and vct reference).
 inline const std::string kInsideFurnace = " --eye 0,0,0.5 --target 0,0,-1 --fov 70 --width 24 --height 24 ";
 
