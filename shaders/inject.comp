@@ -37,12 +37,14 @@ void touchColumnPartners(uint node) {
 }
 
 // Integer sums only, so the result does not depend on the order of the photons.
-void addPhoton(uint node, vec3 units, ivec3 litNormal) {
+void addPhoton(uint node, vec3 units, vec3 litNormal) {
     uint index = (node - uLevelStart[uLevels]) * ACCUMULATOR_WORDS;
     for (uint c = 0u; c < 3u; ++c) accumulate64(index + 2u * c, uint(round(units[c])));
-    for (uint c = 0u; c < 3u; ++c) atomicAdd(radianceAccumulator[index + 6u + c], uint(litNormal[c]));
-    atomicAdd(radianceAccumulator[index + 9u], 1u);
-    for (uint c = 0u; c < 3u; ++c) atomicAdd(radianceAccumulator[index + 10u + c], uint(abs(litNormal[c])));
+    float weight = (units.r + units.g + units.b) * LIT_SIDE_SCALE;
+    for (uint a = 0u; a < 3u; ++a) {
+        accumulate64(index + LIT_SIDE_WORDS + 4u * a, uint(min(round(weight * max(litNormal[a], 0.0)), 4.0e9)));
+        accumulate64(index + LIT_SIDE_WORDS + 4u * a + 2u, uint(min(round(weight * max(-litNormal[a], 0.0)), 4.0e9)));
+    }
     // The first photon of the node touches its partners, also when the node itself was touched
     // before as another cell's partner.
     if ((touchWith(node, uLevels, TOUCHED_BY_PHOTONS) & TOUCHED_BY_PHOTONS) == 0u) touchColumnPartners(node);
@@ -88,7 +90,7 @@ void main() {
     }
     // Clamped so that even an albedo far above 1 (a broken material) cannot wrap a word.
     vec3 units = min(flux * uUnitsPerRelativeFlux, vec3(2147483648.0));
-    ivec3 litNormal = ivec3(round(normalize(texelFetch(uLightNormal, texel, 0).xyz) * LIT_NORMAL_SCALE));
+    vec3 litNormal = normalize(texelFetch(uLightNormal, texel, 0).xyz);
     addPhoton(node, units * share, litNormal);
     if (other != NONE && share < 1.0) addPhoton(other, units * (1.0 - share), litNormal);
 }

@@ -1,12 +1,16 @@
 // The photons' sums per cell, which inject accumulates and radiance_normalize turns into radiance
 // (engine/lighting/radiance_volume.hpp). A file of its own because only those two passes use it,
 // and a compute program may bind only so many storage blocks (16 on llvmpipe).
-// Per cell: reflected flux R, G, B as 64-bit fixed point (low, high words) [0..5]; the lit-side
-// normals of the photons summed as two's-complement integers × LIT_NORMAL_SCALE [6..8]; the
-// photon count [9]; the lit-side normals' absolute values summed likewise [10..12] (with the sums
-// of the normals, how much of the lit surface faces +a and how much −a).
+// Per cell: reflected flux R, G, B as 64-bit fixed point (low, high words) [0..5]; then, for the
+// axes x, y, z, the flux that lit the surface from the +a side and from the −a side [6..17]: each
+// photon adds its flux (R + G + B units) times max(±n_a, 0) of its lit-side normal n, × LIT_SIDE_SCALE,
+// in 64 bits. Weighted by flux, not counted: photons of a bright and a dim light that meet in one
+// voxel (a wall lit outside by the sun and inside by a lamp) send each side its own light.
 const uint ACCUMULATOR_WORDS = RADIANCE_ACCUMULATOR_WORDS;
-const float LIT_NORMAL_SCALE = 31.0;  // 2^31 / 31: 69 M photons per voxel before a sum could wrap
+const uint LIT_SIDE_WORDS = 6u;  // first word of the lit sides
+// A photon's flux is at most 3 × 2^24 units (the brightest texel is 2^24, an albedo at most 1), so
+// one photon's term stays below 2^32 and keeps ~1/31 of a unit's resolution.
+const float LIT_SIDE_SCALE = 31.0;
 layout(std430, binding = SSBO_RADIANCE_ACCUMULATORS) buffer RadianceAccumulators { uint radianceAccumulator[]; };
 
 // 64-bit fixed-point accumulation: low word, carry into the high word. Exact and

@@ -38,16 +38,15 @@ double wideSum(uint word) {
     return double(radianceAccumulator[word]) + 4294967296.0lf * double(radianceAccumulator[word + 1u]);
 }
 
-// The photons' sums of `cell`: flux (rgb, fixed-point units), lit-normal sum (3), count and the
-// sum of the lit normals' absolute values (3).
-// The flux is built whole: NVIDIA's compiler cannot write a double vector's component chosen by
-// a variable (flux[c] = ...), it fails to link with an internal error.
-void photonSums(uint cell, out dvec3 flux, out ivec3 litNormal, out uint photons, out uvec3 litAbs) {
-    uint base = cell * ACCUMULATOR_WORDS;
+// The photons' sums of `cell`: flux (rgb, fixed-point units) and, per axis a, the flux that lit
+// it from the +a side and from the −a side (radiance_accumulators.glsl, × LIT_SIDE_SCALE).
+// The vectors are built whole: NVIDIA's compiler cannot write a double vector's component chosen
+// by a variable (flux[c] = ...), it fails to link with an internal error.
+void photonSums(uint cell, out dvec3 flux, out dvec3 litPlus, out dvec3 litMinus) {
+    uint base = cell * ACCUMULATOR_WORDS, sides = base + LIT_SIDE_WORDS;
     flux = dvec3(wideSum(base), wideSum(base + 2u), wideSum(base + 4u));
-    litNormal = ivec3(int(radianceAccumulator[base + 6u]), int(radianceAccumulator[base + 7u]), int(radianceAccumulator[base + 8u]));
-    photons = radianceAccumulator[base + 9u];
-    litAbs = uvec3(radianceAccumulator[base + 10u], radianceAccumulator[base + 11u], radianceAccumulator[base + 12u]);
+    litPlus = dvec3(wideSum(sides), wideSum(sides + 4u), wideSum(sides + 8u));
+    litMinus = dvec3(wideSum(sides + 2u), wideSum(sides + 6u), wideSum(sides + 10u));
 }
 
 void main() {
@@ -57,11 +56,8 @@ void main() {
     uint cell = node - uLevelStart[uLevels];
     // In double until the radiance itself: the watts of a texel can exceed float's range (a 1e20
     // W/m² sun over a 1e18 m scene) while the radiance ρ/π·E cannot.
-    dvec3 flux;
-    ivec3 litNormal;
-    uint photons;
-    uvec3 litAbs;
-    photonSums(cell, flux, litNormal, photons, litAbs);
+    dvec3 flux, litPlus, litMinus;
+    photonSums(cell, flux, litPlus, litMinus);
     double area = double(cellArea[cell]);
     uint partners = cellColumns[cell];
     if (area < double(POOLING_AREA) && partners != 0u) {
@@ -74,15 +70,11 @@ void main() {
             uint partnerNode = findNode(uvec3(partner), uLevels);
             if (partnerNode == NONE) continue;
             uint partnerCell = partnerNode - uLevelStart[uLevels];
-            dvec3 partnerFlux;
-            ivec3 partnerNormal;
-            uint partnerPhotons;
-            uvec3 partnerAbs;
-            photonSums(partnerCell, partnerFlux, partnerNormal, partnerPhotons, partnerAbs);
+            dvec3 partnerFlux, partnerPlus, partnerMinus;
+            photonSums(partnerCell, partnerFlux, partnerPlus, partnerMinus);
             flux += partnerFlux;
-            litNormal += partnerNormal;
-            photons += partnerPhotons;
-            litAbs += partnerAbs;
+            litPlus += partnerPlus;
+            litMinus += partnerMinus;
             area += double(cellArea[partnerCell]);
         }
     }
@@ -102,12 +94,14 @@ void main() {
     // normal gave every direction in front of it the mean. Emission leaves every way.
     float reflectedShare = dot(radiance, vec3(1.0)) / max(dot(radiance + emitted, vec3(1.0)), 1e-30);
     vec3 opacity = min(unpackUnorm4x8(cellOpacity[cell]).xyz, vec3(MAX_OPACITY));
-    vec3 meanNormal = photons > 0u ? vec3(litNormal) / (LIT_NORMAL_SCALE * float(photons)) : vec3(0.0);
-    vec3 meanAbs = photons > 0u ? vec3(litAbs) / (LIT_NORMAL_SCALE * float(photons)) : vec3(0.0);
+    // Flux-weighted means of max(n·e, 0) over the photons' lit-side normals, towards +a and −a.
+    double litWeight = (flux.r + flux.g + flux.b) * double(LIT_SIDE_SCALE);
+    vec3 meanPlus = litWeight > 0.0lf ? vec3(litPlus / litWeight) : vec3(0.0);
+    vec3 meanMinus = litWeight > 0.0lf ? vec3(litMinus / litWeight) : vec3(0.0);
     vec3 perOpacity = float(area) / max(opacity, vec3(1e-3));
     // Towards −a (what a cone travelling along +a meets) and towards +a.
-    vec3 towardMinus = min(0.5 * max(meanAbs - meanNormal, 0.0) * perOpacity, vec3(MAX_EXIT_SHARE));
-    vec3 towardPlus = min(0.5 * max(meanAbs + meanNormal, 0.0) * perOpacity, vec3(MAX_EXIT_SHARE));
+    vec3 towardMinus = min(meanMinus * perOpacity, vec3(MAX_EXIT_SHARE));
+    vec3 towardPlus = min(meanPlus * perOpacity, vec3(MAX_EXIT_SHARE));
     float emittedShare = 1.0 - reflectedShare;
     storeExitShares(cell, emittedShare + reflectedShare * vec4(towardMinus.x, towardPlus.x, towardMinus.y, towardPlus.y),
                     emittedShare + reflectedShare * vec2(towardMinus.z, towardPlus.z));

@@ -278,6 +278,31 @@ TEST(GiAccuracy, ASheetBetweenASunlitRoomAndAClosedOneKeepsItDark) {
     EXPECT_LE(leak.largest, kSheetLargestPixel);
 }
 
+TEST(GiAccuracy, TwoLightsGiveTheSumOfTheirIndirectLight) {
+    // Light adds up: the sun outside a room of walls of no thickness (through a hole in its roof)
+    // and a point light inside it. Each wall voxel holds both faces, lit outside by the sun and
+    // inside by the lamp with far less flux per photon; its light must leave each side in
+    // proportion to the flux that side received (photons counted alike sent half the sun's light
+    // into the room: 4.4× the sum).
+    const auto dir = test::testDir();
+    const std::string view = "--scene " + test::writeRoomWithRoofHole(dir).string() +
+                             " --eye 0,2,1.9 --target 0,1.5,-2 --fov 80 --width 80 --height 45 --aov gi";
+    const std::string sun = " --sun-dir 0.15,-1,0.1 --sun-irradiance 10",
+                      lamp = " --point-pos 1.5,3.5,1.5 --point-intensity 2";
+    auto meanOf = [](const ImageF& image) {
+        double sum = 0.0;
+        for (std::size_t i = 0; i < image.rgba.size(); i += 4) sum += image.rgba[i] + image.rgba[i + 1] + image.rgba[i + 2];
+        return sum / (3.0 * double(image.width) * image.height);
+    };
+    const double sunOnly = meanOf(render(dir, "sun", view + sun)), lampOnly = meanOf(render(dir, "lamp", view + lamp));
+    const double both = meanOf(render(dir, "both", view + sun + lamp));
+    std::printf("[ lights   ] indirect mean: sun %.5f, lamp %.5f, both %.5f (%.3f× their sum)\n", sunOnly, lampOnly, both,
+                both / (sunOnly + lampOnly));
+    EXPECT_GT(sunOnly, 0.0);
+    EXPECT_GT(lampOnly, 0.0);
+    EXPECT_NEAR(both, sunOnly + lampOnly, 0.02 * (sunOnly + lampOnly));
+}
+
 TEST(GiAccuracy, AFloorUnderASheetSeesNoneOfTheEmitterAboveIt) {
     // Three parallel squares 4 m wide: a floor, a sheet 1 m above it and an emitter (Le = 1) 3.5 m
     // up. From the middle of the floor every upward ray meets the sheet's unlit underside, so its
