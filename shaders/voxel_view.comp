@@ -17,9 +17,11 @@ layout(rgba32f, binding = IMAGE_VOXEL_VIEW) uniform writeonly image2D uOutput;
 layout(binding = TEXTURE_VIEW_ALBEDO_BRICKS) uniform sampler3D uBrickAlbedo;  // (ρ·τ, τ): also the opacity shown
 layout(std430, binding = SSBO_CELL_VALUES) buffer CellAlbedo { uint cellAlbedo[]; };
 layout(std430, binding = SSBO_RAW_VALUE) buffer RawValue { vec4 rawValue[]; };
-// The radiance view: the voxels' radiance, and for nodes the mean over the six directions of the
-// radiance their bricks' slabs send (brick_layout.hpp, "Slabs").
-layout(std430, binding = SSBO_CELL_RADIANCE) buffer CellRadiance { vec4 cellRadiance[]; };
+// The radiance view: of the voxels, the light they send towards the eye, and for nodes the mean
+// over the six directions of the radiance their bricks' slabs send (brick_layout.hpp, "Slabs").
+#include "cell_radiance.glsl"
+#include "facing.glsl"
+layout(std430, binding = SSBO_CELL_OPACITY) buffer CellOpacity { uint cellOpacity[]; };  // RGBA8 (αx, αy, αz, α)
 layout(binding = TEXTURE_DIRECTIONAL_RADIANCE) uniform sampler3D uDirectional;  // directional_pool.glsl
 
 uniform vec3 uEyeVoxel;      // camera position in voxel space
@@ -40,12 +42,34 @@ vec3 nodeRadiance(uint node, vec3 inBrick) {
     return sum / 6.0;
 }
 
-// (value·τ, τ) of a node at p: albedo or radiance, τ the geometry's (per voxel length).
-vec4 nodeValue(uint node, int level, vec3 p) {
+// The light voxel `cell` sends towards a ray travelling along `direction`: its radiance times the
+// share that leaves towards the ray along each axis (facing.glsl), mixed as a narrow cone reading
+// the voxels mixes them (cone_march.glsl, voxelSeen): by |d_a| × the voxel's optical depth along
+// a. A wall lit on one side shows its light on that side only, as the cones see it; the voxel's
+// radiance alone is the mean over both of its sides.
+vec3 cellRadianceSeen(uint cell, vec3 direction) {
+    vec4 stored = cellRadiance[cell];
+    if (!(stored.a > 0.0)) return vec3(0.0);
+    vec3 alpha = min(unpackUnorm4x8(cellOpacity[cell]).xyz, vec3(MAX_OPACITY));
+    float shares[6];
+    exitShares(cell, shares);
+    float seen = 0.0, weight = 0.0;
+    for (int a = 0; a < 3; ++a) {
+        float w = abs(direction[a]) * -log(1.0 - alpha[a]);
+        seen += w * shares[2 * a + (direction[a] < 0.0 ? 1 : 0)];
+        weight += w;
+    }
+    return stored.rgb / stored.a * (weight > 0.0 ? seen / weight : 0.0);
+}
+
+// (value·τ, τ) of a node at p, seen along `direction`: albedo or radiance, τ the geometry's (per
+// voxel length).
+vec4 nodeValue(uint node, int level, vec3 p, vec3 direction) {
     if (level == uLevels) {
-        vec4 a = unpackUnorm4x8(cellAlbedo[node - uLevelStart[uLevels]]);
+        uint cell = node - uLevelStart[uLevels];
+        vec4 a = unpackUnorm4x8(cellAlbedo[cell]);
         float tau = opticalDepth(a.a);
-        if (uShowRadiance != 0) return vec4(cellRadiance[node - uLevelStart[uLevels]].rgb, tau);
+        if (uShowRadiance != 0) return vec4(cellRadianceSeen(cell, direction) * tau, tau);
         return vec4(a.rgb * tau, tau);
     }
     float size = float(1 << (uLevels - level));
@@ -74,7 +98,7 @@ void main() {
         float tExit = max(hit.tExit, t + 1e-4);
         if (hit.node != NONE) {
             vec3 middle = uEyeVoxel + direction * (0.5 * (t + tExit));
-            vec4 v = nodeValue(hit.node, hit.level, middle);  // (value·τ, τ), τ per voxel length
+            vec4 v = nodeValue(hit.node, hit.level, middle, direction);  // (value·τ, τ), τ per voxel length
             float alpha = opacityOver(v.a, tExit - t);
             const float faceShade[3] = float[3](0.8, 1.0, 0.6);
             vec3 albedo = (v.a > 0.0 ? v.rgb / v.a : vec3(0.0)) * (uShowRadiance != 0 ? 1.0 : faceShade[hit.entryAxis]);

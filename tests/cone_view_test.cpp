@@ -36,10 +36,11 @@ Camera lookingAt(glm::dvec3 eye, glm::dvec3 target) {
     return camera;
 }
 
-// The central mean of the cone view and of the direct AOV seen by `camera`.
-std::pair<double, double> coneViewAndDirect(Renderer& renderer, const Camera& camera) {
+// The central mean of a debug view (`view`: the cones by default) and of the direct AOV seen by
+// `camera`.
+std::pair<double, double> coneViewAndDirect(Renderer& renderer, const Camera& camera, ViewMode view = ViewMode::Cones) {
     RenderSettings s = renderer.settings();
-    s.view = ViewMode::Cones;
+    s.view = view;
     renderer.setSettings(s);
     renderer.renderFrame(camera);
     const double cones = centralMean(renderer.readHdr());
@@ -105,4 +106,27 @@ TEST_P(WhatACone, SeesNothingOfALitWallFromItsDarkSide) {
     EXPECT_NEAR(litCones / litDirect, 1.0, 0.1);
     EXPECT_EQ(darkDirect, 0.0);
     EXPECT_LT(darkCones, 0.02 * litDirect);
+}
+
+// The voxel radiance view at the voxels' level shows the light a voxel sends towards the eye, as
+// the cones see it: a wall of no thickness lit on one side holds its light in voxels that hold
+// both of its sides, and must look lit from that side only (its mean radiance is that side's).
+TEST(VoxelRadianceView, ShowsALitWallOnlyFromItsLitSide) {
+    const auto dir = test::testDir();
+    test::ObjWriter obj;
+    obj.material("grey", glm::vec3(0.5f));
+    obj.quad({-2.0f, 0.0f, 0.0f}, {2.0f, 0.0f, 0.0f}, {2.0f, 3.0f, 0.0f}, {-2.0f, 3.0f, 0.0f});
+    Scene scene = loadModelFile(obj.write(dir));
+    Light sun;
+    sun.direction = glm::normalize(glm::dvec3(0.0, -0.5, -1.0));  // onto the wall's +z side
+    sun.irradiance = 4.0;
+    scene.lights = {sun};
+    auto context = gl::createContext(gl::defaultBackend());
+    Renderer renderer(scene, smallSettings(0));
+    const auto [lit, litDirect] = coneViewAndDirect(renderer, lookingAt({0.0, 1.5, 1.2}, {0.0, 1.5, 0.0}), ViewMode::Radiance);
+    const auto [dark, darkDirect] = coneViewAndDirect(renderer, lookingAt({0.0, 1.5, -1.2}, {0.0, 1.5, 0.0}), ViewMode::Radiance);
+    std::printf("[ voxel view] radiance of a wall: lit side %.4f (direct %.4f), dark side %.5f\n", lit, litDirect, dark);
+    EXPECT_NEAR(lit / litDirect, 1.0, 0.1);
+    EXPECT_EQ(darkDirect, 0.0);
+    EXPECT_LT(dark, 0.02 * litDirect);
 }

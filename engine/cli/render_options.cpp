@@ -23,7 +23,7 @@ void addRenderSettingsOptions(CLI::App& command, RenderSettingsOptions& o) {
     command.add_option("--pcf-radius", o.pcfRadius, "shadow filter radius in texels (0 = one tap)")
         ->capture_default_str();
     command.add_option("--view", o.view,
-                       "lit (the lit image), voxels (the octree's albedo), radiance (the octree's radiance) or cones (what a cone "
+                       "lit (the lit image), voxels (the octree's albedo), radiance (the octree's radiance: of the voxels, the light each sends towards the eye) or cones (what a cone "
                        "of the set's cap, or with --cone-rays a narrow cone, brings back from the eye: compare with --aov direct)")
         ->capture_default_str();
     command.add_option("--gi", o.gi, "indirect light by cone tracing: on or off")->capture_default_str();

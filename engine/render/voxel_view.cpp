@@ -25,7 +25,9 @@ void VoxelView::render(const Octree& octree, const RadianceVolume* radiance, con
         .storage(gl::SSBO_CELL_VALUES, octree.cellAlbedo)
         .storage(gl::SSBO_RAW_VALUE, octree.rawValue);
     if (radiance) {
-        call.storage(gl::SSBO_CELL_RADIANCE, radiance->cellRadiance);
+        call.storage(gl::SSBO_CELL_RADIANCE, radiance->cellRadiance)
+            .storage(gl::SSBO_CELL_EXIT_SHARES, radiance->cellExitShares)
+            .storage(gl::SSBO_CELL_OPACITY, octree.cellOpacity);
         bindDirectionalTexture(call, *radiance);
     }
     march(call, octree, camera, scene);
