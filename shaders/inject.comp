@@ -39,8 +39,10 @@ void touchColumnPartners(uint node) {
 // Integer sums only, so the result does not depend on the order of the photons.
 void addPhoton(uint node, vec3 units, vec3 litNormal) {
     uint index = (node - uLevelStart[uLevels]) * ACCUMULATOR_WORDS;
-    for (uint c = 0u; c < 3u; ++c) accumulate64(index + 2u * c, uint(round(units[c])));
-    float weight = (units.r + units.g + units.b) * LIT_SIDE_SCALE;
+    uvec3 rounded = uvec3(round(units));
+    for (uint c = 0u; c < 3u; ++c) accumulate64(index + 2u * c, rounded[c]);
+    // The flux as the sums above hold it, so that the lit sides' mean over it never exceeds 1.
+    float weight = (float(rounded.r) + float(rounded.g) + float(rounded.b)) * LIT_SIDE_SCALE;
     for (uint a = 0u; a < 3u; ++a) {
         accumulate64(index + LIT_SIDE_WORDS + 4u * a, uint(min(round(weight * max(litNormal[a], 0.0)), 4.0e9)));
         accumulate64(index + LIT_SIDE_WORDS + 4u * a + 2u, uint(min(round(weight * max(-litNormal[a], 0.0)), 4.0e9)));

@@ -96,8 +96,8 @@ void main() {
     vec3 opacity = min(unpackUnorm4x8(cellOpacity[cell]).xyz, vec3(MAX_OPACITY));
     // Flux-weighted means of max(n·e, 0) over the photons' lit-side normals, towards +a and −a.
     double litWeight = (flux.r + flux.g + flux.b) * double(LIT_SIDE_SCALE);
-    vec3 meanPlus = litWeight > 0.0lf ? vec3(litPlus / litWeight) : vec3(0.0);
-    vec3 meanMinus = litWeight > 0.0lf ? vec3(litMinus / litWeight) : vec3(0.0);
+    vec3 meanPlus = litWeight > 0.0lf ? min(vec3(litPlus / litWeight), vec3(1.0)) : vec3(0.0);
+    vec3 meanMinus = litWeight > 0.0lf ? min(vec3(litMinus / litWeight), vec3(1.0)) : vec3(0.0);
     vec3 perOpacity = float(area) / max(opacity, vec3(1e-3));
     // Towards −a (what a cone travelling along +a meets) and towards +a.
     vec3 towardMinus = min(meanMinus * perOpacity, vec3(MAX_EXIT_SHARE));
