@@ -179,6 +179,24 @@ TEST(Bench, ParetoFrontAndEqualErrorTime) {
     for (std::size_t i = 0; i < rows.size(); ++i) EXPECT_EQ(bySsim[i], rows[i].pareto) << i;
 }
 
+TEST(Bench, BestEqualErrorSpeedupIsTheFastestPointAgainstThePathTracerAtItsOwnError) {
+    // Path tracer: 1 ms at RMSE 0.4, 4 ms at 0.2, 16 ms at 0.1 (time ∝ 1/RMSE²).
+    std::vector<bench::BenchRow> rows = {row("engine", 10, 0.4), row("engine", 20, 0.1), row("engine", 30, 0.2),
+                                         row("pathtracer", 1, 0.4, 1), row("pathtracer", 4, 0.2, 4),
+                                         row("pathtracer", 16, 0.1, 16)};
+    rows[0].frameStaticMs = 2.0;   // the path tracer needs 1 ms at its error: 0.5×
+    rows[1].frameStaticMs = 4.0;   // 16 ms: 4×, the best
+    rows[2].frameStaticMs = 2.0;   // 4 ms: 2×
+    const bench::EqualErrorSpeedup best = bench::bestEqualErrorSpeedup(rows, bench::Quality::Rmse);
+    ASSERT_NE(best.row, nullptr);
+    EXPECT_EQ(best.row, &rows[1]);
+    EXPECT_NEAR(best.time.ms, 16.0, 1e-9);
+    EXPECT_NEAR(best.speedup, 4.0, 1e-9);
+    // Without a path-tracer curve there is no best point.
+    rows.resize(3);
+    EXPECT_EQ(bench::bestEqualErrorSpeedup(rows, bench::Quality::Rmse).row, nullptr);
+}
+
 // The whole benchmark on tiny images: rows, finite numbers, chart, the reference cache, and the
 // default setting beating an obviously bad one.
 TEST(Bench, QuickRunWritesRowsChartAndUsesTheCache) {

@@ -36,6 +36,16 @@ struct EqualErrorTime {
 };
 EqualErrorTime pathTracerTimeAt(const std::vector<BenchRow>& rows, double value, Quality quality);
 
+// The engine point whose static-geometry frame is the most times faster than the path tracer at
+// the point's own error (`quality`): the sweep's best setting in the equal-error sense, where the
+// default point is only one of them. `row` is null without a path-tracer curve.
+struct EqualErrorSpeedup {
+    const BenchRow* row = nullptr;
+    EqualErrorTime time;
+    double speedup = 0.0;  // path tracer ms / the point's static-geometry ms
+};
+EqualErrorSpeedup bestEqualErrorSpeedup(const std::vector<BenchRow>& rows, Quality quality);
+
 struct BenchSummary {
     std::string name, scene, camera, command, date, renderer, backend, cpu;
     std::string commit;  // `git describe --always --dirty` of the source tree (shaders are read from it)
