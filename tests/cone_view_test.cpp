@@ -60,6 +60,19 @@ RenderSettings smallSettings(int narrowCones) {
     return s;
 }
 
+// A wall of no thickness, 4 × 3 m in the plane z = 0, lit by a sun on its +z side only.
+Scene wallLitOnOneSide(const std::filesystem::path& dir) {
+    test::ObjWriter obj;
+    obj.material("grey", glm::vec3(0.5f));
+    obj.quad({-2.0f, 0.0f, 0.0f}, {2.0f, 0.0f, 0.0f}, {2.0f, 3.0f, 0.0f}, {-2.0f, 3.0f, 0.0f});
+    Scene scene = loadModelFile(obj.write(dir));
+    Light sun;
+    sun.direction = glm::normalize(glm::dvec3(0.0, -0.5, -1.0));
+    sun.irradiance = 4.0;
+    scene.lights = {sun};
+    return scene;
+}
+
 // The cone set's cap (0) and a narrow cone (1).
 class WhatACone : public ::testing::TestWithParam<int> {};
 
@@ -88,15 +101,7 @@ TEST_P(WhatACone, SeesALitFloorAtItsRadiance) {
 }
 
 TEST_P(WhatACone, SeesNothingOfALitWallFromItsDarkSide) {
-    const auto dir = test::testDir();
-    test::ObjWriter obj;
-    obj.material("grey", glm::vec3(0.5f));
-    obj.quad({-2.0f, 0.0f, 0.0f}, {2.0f, 0.0f, 0.0f}, {2.0f, 3.0f, 0.0f}, {-2.0f, 3.0f, 0.0f});
-    Scene scene = loadModelFile(obj.write(dir));
-    Light sun;
-    sun.direction = glm::normalize(glm::dvec3(0.0, -0.5, -1.0));  // onto the wall's +z side
-    sun.irradiance = 4.0;
-    scene.lights = {sun};
+    Scene scene = wallLitOnOneSide(test::testDir());
     auto context = gl::createContext(gl::defaultBackend());
     Renderer renderer(scene, smallSettings(GetParam()));
     const auto [litCones, litDirect] = coneViewAndDirect(renderer, lookingAt({0.0, 1.5, 1.2}, {0.0, 1.5, 0.0}));
@@ -112,15 +117,7 @@ TEST_P(WhatACone, SeesNothingOfALitWallFromItsDarkSide) {
 // the cones see it: a wall of no thickness lit on one side holds its light in voxels that hold
 // both of its sides, and must look lit from that side only (its mean radiance is that side's).
 TEST(VoxelRadianceView, ShowsALitWallOnlyFromItsLitSide) {
-    const auto dir = test::testDir();
-    test::ObjWriter obj;
-    obj.material("grey", glm::vec3(0.5f));
-    obj.quad({-2.0f, 0.0f, 0.0f}, {2.0f, 0.0f, 0.0f}, {2.0f, 3.0f, 0.0f}, {-2.0f, 3.0f, 0.0f});
-    Scene scene = loadModelFile(obj.write(dir));
-    Light sun;
-    sun.direction = glm::normalize(glm::dvec3(0.0, -0.5, -1.0));  // onto the wall's +z side
-    sun.irradiance = 4.0;
-    scene.lights = {sun};
+    Scene scene = wallLitOnOneSide(test::testDir());
     auto context = gl::createContext(gl::defaultBackend());
     Renderer renderer(scene, smallSettings(0));
     const auto [lit, litDirect] = coneViewAndDirect(renderer, lookingAt({0.0, 1.5, 1.2}, {0.0, 1.5, 0.0}), ViewMode::Radiance);
