@@ -137,6 +137,7 @@ void main() {
     vec4 albedo = unpackUnorm4x8(cellAlbedo[cell]);
     vec3 normal = unpackNormal(cellNormal[cell]);
     vec3 centre = vec3(unpackCell(nodeCoord[node])) + 0.5;
+    bool solid[2] = bool[2](facesSolid(centre, normal), facesSolid(centre, -normal));
     vec3 irradiance[2];
 #if defined(SHARE_WITH_SIBLINGS)
     if (!sharedIrradiance(firstSibling - uLevelStart[uLevels], cellCount, normal, irradiance)) {
@@ -156,7 +157,7 @@ void main() {
     // The cones then start beyond the outer layer, where the outer cells' own would start.
     for (int side = 0; side < 2; ++side) {
         vec3 n = side == 0 ? normal : -normal;
-        bool gather = !facesSolid(centre, n) || siblingTakesSide(nodeParent[node], cell, normal, n);
+        bool gather = !solid[side] || siblingTakesSide(nodeParent[node], cell, normal, n);
         // The cone set (voxelGatherCones): no narrow cones to shift.
         irradiance[side] = gather ? gatherIrradiance(centre + n * uConeOffset, n, n, vec2(0.0)).rgb : vec3(0.0);
     }
@@ -167,6 +168,6 @@ void main() {
 #endif
     // Whoever gathered it, a cell's own side that faces a solid receives nothing.
     for (int side = 0; side < 2; ++side)
-        if (facesSolid(centre, side == 0 ? normal : -normal)) irradiance[side] = vec3(0.0);
+        if (solid[side]) irradiance[side] = vec3(0.0);
     storeBounced(cell, cellCount, node, albedo, normal, irradiance);
 }

@@ -222,12 +222,7 @@ bool readsStayInside(vec3 p, int coarseLevel, vec3 lo, float size) {
 vec4 voxelSeen(uint voxel, int i, float share) {
     if (voxel == NONE || share <= 0.0) return vec4(0.0);
     uint index = voxel - uLevelStart[uLevels];
-    float alpha = min(unpackUnorm4x8(coneCellOpacity[index])[i >> 1], MAX_OPACITY);
-    if (alpha <= 0.0) return vec4(0.0);
-    float tau = -log(1.0 - alpha);
-    vec4 stored = cellRadiance[index];
-    vec3 radiance = stored.a > 0.0 ? stored.rgb / stored.a : vec3(0.0);
-    return share * vec4(radiance * exitShare(index, i) * tau, tau);
+    return share * voxelSeenAlong(index, i, unpackUnorm4x8(coneCellOpacity[index])[i >> 1]);
 }
 
 vec4 sampleVoxels(vec3 p, uint leaf) {

@@ -13,6 +13,18 @@ void exitShares(uint cell, out float shares[6]) {
     shares = float[6](xy.x, xy.y, xy.z, xy.w, z.x, z.y);
 }
 
+// What a ray travelling along pool direction i meets of voxel `cell`, whose opacity along that
+// axis is `alpha`: (L·f·τ, τ), its radiance L times its exit share f that way, τ = −ln(1 − α)
+// the optical depth of the voxel's window along the axis.
+vec4 voxelSeenAlong(uint cell, int i, float alpha) {
+    alpha = min(alpha, MAX_OPACITY);
+    if (alpha <= 0.0) return vec4(0.0);
+    float tau = -log(1.0 - alpha);
+    vec4 stored = cellRadiance[cell];
+    vec3 radiance = stored.a > 0.0 ? stored.rgb / stored.a : vec3(0.0);
+    return vec4(radiance * exitShare(cell, i) * tau, tau);
+}
+
 // Stores the six shares of `cell`: towards +x −x +y −y (`xy`), +z −z (`z`), as exitShare reads them.
 void storeExitShares(uint cell, vec4 xy, vec2 z) {
     cellExitShares[2u * cell] = xy;

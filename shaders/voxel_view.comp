@@ -42,24 +42,15 @@ vec3 nodeRadiance(uint node, vec3 inBrick) {
     return sum / 6.0;
 }
 
-// The light voxel `cell` sends towards a ray travelling along `direction`: its radiance times the
-// share that leaves towards the ray along each axis (facing.glsl), mixed as a narrow cone reading
-// the voxels mixes them (cone_march.glsl, voxelSeen): by |d_a| × the voxel's optical depth along
-// a. A wall lit on one side shows its light on that side only, as the cones see it; the voxel's
-// radiance alone is the mean over both of its sides.
+// The light voxel `cell` sends towards a ray travelling along `direction`: what the ray meets of
+// it along each axis (facing.glsl), mixed by |d_a| as a narrow cone reading the voxels mixes them
+// (cone_march.glsl, sampleVoxels). A wall lit on one side shows its light on that side only, as
+// the cones see it; the voxel's radiance alone is the mean over both of its sides.
 vec3 cellRadianceSeen(uint cell, vec3 direction) {
-    vec4 stored = cellRadiance[cell];
-    if (!(stored.a > 0.0)) return vec3(0.0);
-    vec3 alpha = min(unpackUnorm4x8(cellOpacity[cell]).xyz, vec3(MAX_OPACITY));
-    float shares[6];
-    exitShares(cell, shares);
-    float seen = 0.0, weight = 0.0;
-    for (int a = 0; a < 3; ++a) {
-        float w = abs(direction[a]) * -log(1.0 - alpha[a]);
-        seen += w * shares[2 * a + (direction[a] < 0.0 ? 1 : 0)];
-        weight += w;
-    }
-    return stored.rgb / stored.a * (weight > 0.0 ? seen / weight : 0.0);
+    vec4 opacity = unpackUnorm4x8(cellOpacity[cell]);
+    vec4 seen = vec4(0.0);
+    for (int a = 0; a < 3; ++a) seen += abs(direction[a]) * voxelSeenAlong(cell, 2 * a + (direction[a] < 0.0 ? 1 : 0), opacity[a]);
+    return seen.a > 0.0 ? seen.rgb / seen.a : vec3(0.0);
 }
 
 // (value·τ, τ) of a node at p, seen along `direction`: albedo or radiance, τ the geometry's (per

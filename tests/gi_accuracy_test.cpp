@@ -19,6 +19,7 @@
 #include "metrics/image_metrics.hpp"
 #include "metrics/region_ratio.hpp"
 #include "scene/scene_loader.hpp"
+#include "stress_util.hpp"
 #include "test_models.hpp"
 #include "test_util.hpp"
 
@@ -285,17 +286,12 @@ TEST(GiAccuracy, TwoLightsGiveTheSumOfTheirIndirectLight) {
     // proportion to the flux that side received (photons counted alike sent half the sun's light
     // into the room: 4.4× the sum).
     const auto dir = test::testDir();
-    const std::string view = "--scene " + test::writeRoomWithRoofHole(dir).string() +
+    const std::string view = "--scene " + (std::filesystem::path(VCT_SOURCE_DIR) / "benchmarks/scenes/lamp_room.obj").string() +
                              " --eye 0,2,1.9 --target 0,1.5,-2 --fov 80 --width 80 --height 45 --aov gi";
     const std::string sun = " --sun-dir 0.15,-1,0.1 --sun-irradiance 10",
                       lamp = " --point-pos 1.5,3.5,1.5 --point-intensity 2";
-    auto meanOf = [](const ImageF& image) {
-        double sum = 0.0;
-        for (std::size_t i = 0; i < image.rgba.size(); i += 4) sum += image.rgba[i] + image.rgba[i + 1] + image.rgba[i + 2];
-        return sum / (3.0 * double(image.width) * image.height);
-    };
-    const double sunOnly = meanOf(render(dir, "sun", view + sun)), lampOnly = meanOf(render(dir, "lamp", view + lamp));
-    const double both = meanOf(render(dir, "both", view + sun + lamp));
+    const double sunOnly = test::meanRgb(render(dir, "sun", view + sun)), lampOnly = test::meanRgb(render(dir, "lamp", view + lamp));
+    const double both = test::meanRgb(render(dir, "both", view + sun + lamp));
     std::printf("[ lights   ] indirect mean: sun %.5f, lamp %.5f, both %.5f (%.3f× their sum)\n", sunOnly, lampOnly, both,
                 both / (sunOnly + lampOnly));
     EXPECT_GT(sunOnly, 0.0);

@@ -64,22 +64,6 @@ private:
     std::string body_;
 };
 
-// A room 4 × 4 × 4 m of single quads (walls of no thickness, albedo 0.6), floor at y = 0, with a
-// 1 × 1 m hole in the middle of its roof.
-inline std::filesystem::path writeRoomWithRoofHole(const std::filesystem::path& dir) {
-    ObjWriter obj;
-    obj.material("wall", glm::vec3(0.6f));
-    const float s = 2.0f, h = 0.5f, top = 4.0f;
-    obj.quad({-s, 0, -s}, {s, 0, -s}, {s, 0, s}, {-s, 0, s});
-    obj.quad({-s, 0, -s}, {-s, top, -s}, {s, top, -s}, {s, 0, -s});
-    obj.quad({-s, 0, s}, {s, 0, s}, {s, top, s}, {-s, top, s});
-    obj.quad({-s, 0, -s}, {-s, 0, s}, {-s, top, s}, {-s, top, -s});
-    obj.quad({s, 0, -s}, {s, top, -s}, {s, top, s}, {s, 0, s});
-    const float roof[4][4] = {{-s, -h, -s, s}, {h, s, -s, s}, {-h, h, -s, -h}, {-h, h, h, s}};  // x0 x1 z0 z1
-    for (const auto& r : roof) obj.quad({r[0], top, r[2]}, {r[1], top, r[2]}, {r[1], top, r[3]}, {r[0], top, r[3]});
-    return obj.write(dir, "room");
-}
-
 // A closed box ±1 with one material of albedo rho and emission Le, flat-shaded: written with one
 // explicit normal per face, so that shading and geometric normals agree and the furnace
 // conserves energy exactly. (ObjWriter writes no normals; the loader then smooths them across
