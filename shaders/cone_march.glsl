@@ -45,9 +45,6 @@ uniform int uRayFirst, uRayEnd;
 uniform int uRaySequence;
 uniform vec3 uVoxelOrigin;
 uniform float uVoxelScale;
-// Narrow cones thinner than a voxel read the voxels themselves (sampleVoxels) while they hold the
-// light the bricks hold (one bounce: the bounce pass leaves the voxels at the first).
-uniform int uReadVoxels;
 layout(std430, binding = SSBO_CELL_OPACITY) buffer ConeCellOpacity { uint coneCellOpacity[]; };  // (αx, αy, αz, α)
 
 // The cone being traced: its axis, and E[max(±d_a, 0)] per axis over its directions
@@ -309,7 +306,7 @@ bool sampleRadiance(vec3 p, float lod, vec3 origin, vec3 invDirection, out vec4 
     // from pixel to pixel, average out anyway; one level halves their lookups.
     if (uRayCount > 0) {
         const int k = fineLevel == coarseLevel || blend >= 0.5 ? 1 : 0;
-        if (uReadVoxels != 0 && k == 0 && fineLevel == uLevels - 1 && fineNode != NONE) {
+        if (k == 0 && fineLevel == uLevels - 1 && fineNode != NONE) {
             value = sampleVoxels(p, fineNode);
             return true;
         }
@@ -366,7 +363,7 @@ vec4 traceCone(vec3 origin, vec3 normal, vec3 direction, float tanHalfAngle) {
         vec3 radiance = value.a > 1e-6 ? value.rgb * (alpha / value.a) : vec3(0.0);
         accumulated.rgb += (1.0 - accumulated.a) * radiance;
         accumulated.a += (1.0 - accumulated.a) * alpha;
-        t += uConeStep * diameter;
+        t += step;
     }
     return accumulated;
 }
@@ -380,7 +377,7 @@ float coneShareAbove(vec3 direction, float tanHalfAngle, vec3 n) {
 }
 
 // Two numbers in [0, 1) from the bits of a point: the same point always gives the same pair, so
-// frames stay deterministic, and neighbouring apices get unrelated ones.
+// frames stay deterministic, and neighbouring points get unrelated ones.
 vec2 hashToUnitSquare(vec3 p) {
     uvec3 b = floatBitsToUint(p);
     uint h = b.x * 73856093u ^ b.y * 19349663u ^ b.z * 83492791u;
@@ -388,11 +385,13 @@ vec2 hashToUnitSquare(vec3 p) {
     return vec2(float(h & 0xffffu), float(h >> 16)) / 65536.0;
 }
 
-// The shift of a pixel's narrow-cone directions: from its apex, or, for the later samples of an
-// accumulated frame, from its block of traced pixels `stratum`, which keeps it from sample to
-// sample while the apex moves with the pixel's jitter.
-vec2 narrowConeShift(vec3 origin, ivec2 stratum) {
-    return uRaySequence >= 0 ? hashToUnitSquare(vec3(vec2(stratum), -1.0)) : hashToUnitSquare(origin);
+// The shift of a traced pixel's narrow-cone directions: from the pixel, or, for the later samples
+// of an accumulated frame, from its block of traced pixels `stratum`, which keeps it from sample
+// to sample while the traced pixel of the block changes. Not from the cone's apex: its bits change
+// with the scene's scale and place (the same view of a scene moved far away would get other
+// directions, other noise), the pixel's do not.
+vec2 narrowConeShift(ivec2 pixel, ivec2 stratum) {
+    return uRaySequence >= 0 ? hashToUnitSquare(vec3(vec2(stratum), -1.0)) : hashToUnitSquare(vec3(vec2(pixel), -2.0));
 }
 
 // Narrow cones instead of the cone set (`--cone-rays`, and the later samples of an accumulated

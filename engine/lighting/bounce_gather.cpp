@@ -51,6 +51,10 @@ void BounceGather::run(const Octree& octree, RadianceVolume& volume, RadianceFil
         filter.mip(octree, volume);
     }
     gl::memoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);
+    gl::fitBuffer(volume.bouncedCellRadiance, GLsizeiptr(vec4s), 0, "cell radiance after the bounces");
+    gl::fitBuffer(volume.bouncedCellExitShares, GLsizeiptr(2 * vec4s), 0, "cell exit shares after the bounces");
+    glCopyNamedBufferSubData(volume.cellRadiance.id(), volume.bouncedCellRadiance.id(), 0, 0, GLsizeiptr(vec4s));
+    glCopyNamedBufferSubData(volume.cellExitShares.id(), volume.bouncedCellExitShares.id(), 0, 0, GLsizeiptr(2 * vec4s));
     glCopyNamedBufferSubData(base_.id(), volume.cellRadiance.id(), 0, 0, GLsizeiptr(vec4s));
     glCopyNamedBufferSubData(base_.id(), volume.cellExitShares.id(), GLintptr(vec4s), 0, GLsizeiptr(2 * vec4s));
     gl::memoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);

@@ -5,7 +5,8 @@
 // first bounce plus ρ/π of that irradiance, and filters the radiance bricks again
 // (RadianceFilter): after N − 1 of these the bricks hold N bounces. The voxels' own radiance is
 // put back to the first bounce at the end, so that the radiance filter alone (after a change of
-// the bounce count) gives one bounce again. Cells whose parent's first child has nearly their
+// the bounce count) gives one bounce again; a copy of their N bounces stays for the narrow cones
+// that read voxels (RadianceVolume::bouncedCellRadiance). Cells whose parent's first child has nearly their
 // normal take that child's gathered irradiance; of the others, those that agree with the parent's
 // second gatherer take its irradiance, and the rest gather their own.
 #include "gl/objects.hpp"

@@ -46,8 +46,9 @@ void bindDirectionalImage(gl::ComputeCall& call, const RadianceVolume& v, GLenum
 
 std::size_t RadianceVolume::bytes() const {
     std::size_t total = brickPoolBytes(directionalBricks * glm::ivec3(1, 1, 6), 16);
-    for (const gl::Buffer* b : {&accumulators, &cellRadiance, &cellExitShares, &touchedFlag, &touchedList, &borderFlag,
-                                &borderList, &listCounts, &indirectArgs})
+    for (const gl::Buffer* b : {&accumulators, &cellRadiance, &cellExitShares, &bouncedCellRadiance,
+                                &bouncedCellExitShares, &touchedFlag, &touchedList, &borderFlag, &borderList, &listCounts,
+                                &indirectArgs})
         total += std::size_t(gl::bufferBytes(*b));
     return total;
 }

@@ -22,6 +22,11 @@ struct RadianceVolume {
     gl::Buffer accumulators;  // kAccumulatorWords uints per cell
     gl::Buffer cellRadiance;  // vec4 per cell (touched ones; the rest 0: read opacity from the octree)
     gl::Buffer cellExitShares; // two vec4 per cell, likewise
+    // The same two after the bounce pass's last bounce (the bounce pass sets cellRadiance and
+    // cellExitShares back to the first bounce, which the radiance filter starts from): what narrow
+    // cones thinner than a voxel read while the bricks hold more than one bounce. Empty until a
+    // frame gathers bounces.
+    gl::Buffer bouncedCellRadiance, bouncedCellExitShares;
 
     // Touched nodes: a flag per node (all levels and the cells) and, per level, the list of the
     // touched nodes stored at [levelStart[l], levelStart[l] + count[l]) of `touchedList`.
@@ -43,7 +48,8 @@ struct RadianceVolume {
     gl::Texture directional;
     glm::ivec3 directionalBricks{1};
     // How many bounces of light the radiance bricks hold: 1 after the radiance filter, more after
-    // the bounce pass. The voxels' own radiance (cellRadiance) always holds the first.
+    // the bounce pass. The voxels' own radiance (cellRadiance) always holds the first, and
+    // bouncedCellRadiance as many as the bricks when they hold more.
     int bricksBounces = 1;
     // The geometry bricks (Octree::geometryBricksBuild) over whose density every node outside the
     // border lists holds no light (shaders/radiance_clear.comp); 0: none yet. While they are the

@@ -126,6 +126,7 @@ void gatherBounces(FrameResources& f) {
     if (f.radiance->bricksBounces != 1) {
         f.radianceFilter->leaves(f.svo->octree(), *f.radiance);
         f.radianceFilter->mip(f.svo->octree(), *f.radiance);
+        f.radiance->bricksBounces = 1;
     }
     f.bounces->run(f.svo->octree(), *f.radiance, *f.radianceFilter, f.settings.bounces, frameCones(f.settings));
     f.radiance->bricksBounces = f.settings.bounces;

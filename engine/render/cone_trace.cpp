@@ -131,10 +131,11 @@ void setConeMarchUniforms(gl::ComputeCall& call, const Octree& octree, const Rad
         .uniform("uRayTanHalfAngle", kNarrowConeTan * settings.apertureScale)
         .uniform("uVoxelOrigin", glm::vec3(octree.grid.localMin))
         .uniform("uVoxelScale", float(1.0 / octree.grid.voxelSize))
-        .uniform("uReadVoxels", radiance.bricksBounces == 1 ? 1 : 0)
-        .storage(gl::SSBO_CELL_OPACITY, octree.cellOpacity)
-        .storage(gl::SSBO_CELL_RADIANCE, radiance.cellRadiance)
-        .storage(gl::SSBO_CELL_EXIT_SHARES, radiance.cellExitShares);
+        .storage(gl::SSBO_CELL_OPACITY, octree.cellOpacity);
+    // The voxels narrow cones read hold as many bounces as the bricks.
+    const bool bounced = radiance.bricksBounces > 1;
+    call.storage(gl::SSBO_CELL_RADIANCE, bounced ? radiance.bouncedCellRadiance : radiance.cellRadiance)
+        .storage(gl::SSBO_CELL_EXIT_SHARES, bounced ? radiance.bouncedCellExitShares : radiance.cellExitShares);
 }
 
 SampleCones conesForSample(const ConeSettings& frame, int sample) {
