@@ -256,6 +256,8 @@ bool readsStayInside(vec3 p, int coarseLevel, vec3 lo, float size) {
 // reads average 2×2 voxels across each slab and are interpolated between voxel corners: a ray
 // through them sees a gap of two voxels half closed and a sunlit strip two voxels wide spread
 // over four, where the voxels hold both sharp.
+uvec3 coneStartCell = uvec3(0u);  // the cell a cone starts in (traceCone, sampleVoxels)
+
 vec4 voxelSeen(uint voxel, int i, float share) {
     if (voxel == NONE || share <= 0.0) return vec4(0.0);
     uint index = voxel - uLevelStart[uLevels];
@@ -267,11 +269,13 @@ vec4 voxelSeen(uint voxel, int i, float share) {
 // Reading the leaf bricks ahead of an empty leaf node instead read from half a node ahead of p,
 // a voxel past the window of the sample after it: a cone crossing a sheet inside its voxels
 // counted only part of the sheet's voxel and saw the light beyond it.
-// Across its axis a cone sees the opacity of its own voxel but not its light: a voxel does not
-// know where in it its surface lies, and a cone travelling inside the voxels of a ceiling just
-// under it (from the top of a wall) read the light of the ceiling's sunlit top, which leaves
-// upwards, as if the ceiling lay below it (a closed room beside a sunlit one: up to 10 % of the
-// lit floor's radiance at single pixels with 16 cones).
+// A cone sees the opacity of its own voxel but not its light along an axis until it has left the
+// layer of voxels it started in along that axis. A voxel does not know where in it its surface
+// lies, so a cone that starts in the layer of another surface cannot tell on which side of it it
+// is: cones from the top of a wall, just under a ceiling whose top is sunlit, travel inside the
+// ceiling's layer and read the light of its top, which leaves upwards, as if the ceiling lay below
+// them (a closed room beside a sunlit one: up to 10 % of the lit floor's radiance at single
+// pixels). Once a cone has crossed into a layer from outside, the surfaces there lie ahead of it.
 vec4 sampleVoxels(vec3 p, uint known, int knownLevel) {
     uvec3 cell = uvec3(clamp(floor(p), vec3(0.0), vec3(float((1 << uLevels) - 1))));
     uint own = knownLevel == uLevels - 1 ? childOf(known, childSlot(cell)) : NONE;
@@ -287,7 +291,7 @@ vec4 sampleVoxels(vec3 p, uint known, int knownLevel) {
         q[a] += along ? 1.0 : -1.0;
         uint next = nodeAhead(q, uLevels, cell, known, knownLevel, 2 * a + (along ? 1 : 0));
         vec4 ownSeen = voxelSeen(own, i, ownShare);
-        if ((along ? coneAxis[a] : -coneAxis[a]) < lateralAlignment()) ownSeen.rgb = vec3(0.0);  // across the axis
+        if (cell[a] == coneStartCell[a]) ownSeen.rgb = vec3(0.0);  // not yet out of its start layer along a
         value += weight * (ownSeen + voxelSeen(next, i, 1.0 - ownShare));
     }
     return value;
@@ -381,6 +385,7 @@ vec4 traceCone(vec3 origin, vec3 normal, vec3 direction, float tanHalfAngle) {
     vec4 accumulated = vec4(0.0);
     float t = 1.0;
     descentLevel = 0;
+    coneStartCell = uvec3(clamp(floor(origin), vec3(0.0), vec3(n - 1.0)));
     for (int i = 0; i < 1024 && t < tEnd && accumulated.a < 0.99; ++i) {
         float diameter = coneDiameter(t, tanHalfAngle);
         vec3 p = origin + direction * t + normal * (uConeLift * diameter);  // from t, never accumulated
