@@ -256,8 +256,6 @@ bool readsStayInside(vec3 p, int coarseLevel, vec3 lo, float size) {
 // reads average 2×2 voxels across each slab and are interpolated between voxel corners: a ray
 // through them sees a gap of two voxels half closed and a sunlit strip two voxels wide spread
 // over four, where the voxels hold both sharp.
-uvec3 coneStartCell = uvec3(0u);  // the cell a cone starts in (traceCone, sampleVoxels)
-
 vec4 voxelSeen(uint voxel, int i, float share) {
     if (voxel == NONE || share <= 0.0) return vec4(0.0);
     uint index = voxel - uLevelStart[uLevels];
@@ -269,13 +267,23 @@ vec4 voxelSeen(uint voxel, int i, float share) {
 // Reading the leaf bricks ahead of an empty leaf node instead read from half a node ahead of p,
 // a voxel past the window of the sample after it: a cone crossing a sheet inside its voxels
 // counted only part of the sheet's voxel and saw the light beyond it.
-// A cone sees the opacity of its own voxel but not its light along an axis until it has left the
-// layer of voxels it started in along that axis. A voxel does not know where in it its surface
-// lies, so a cone that starts in the layer of another surface cannot tell on which side of it it
-// is: cones from the top of a wall, just under a ceiling whose top is sunlit, travel inside the
-// ceiling's layer and read the light of its top, which leaves upwards, as if the ceiling lay below
-// them (a closed room beside a sunlit one: up to 10 % of the lit floor's radiance at single
-// pixels). Once a cone has crossed into a layer from outside, the surfaces there lie ahead of it.
+// Until a cone has left the layer of voxels it starts in along an axis, it sees the light of its
+// own voxel along that axis only where the voxel's lit surface lies ahead of it (facing.glsl,
+// litPlace; its opacity always). A voxel does not otherwise know where in it its surface lies, and
+// a cone that starts in the layer of another surface cannot tell on which side of it it is: cones
+// from the top of a wall just under a ceiling whose top is sunlit travel inside the ceiling's
+// voxels, below the ceiling, and read the light of its top, which leaves upwards, as if the
+// ceiling lay below them (a closed room beside a sunlit one: up to 10 % of the lit floor's
+// radiance at single pixels). A cone that crossed into a layer from outside has the surfaces there
+// ahead of it. Where the place is not known (emission, pooled slivers) the light is seen.
+uvec3 coneStartCell = uvec3(0u);  // the cell a cone starts in (traceCone)
+
+bool litBehind(uint voxel, int a, float at, bool along) {
+    vec3 place;
+    if (!litPlace(voxel - uLevelStart[uLevels], place)) return false;
+    return along ? place[a] < at : place[a] > at;
+}
+
 vec4 sampleVoxels(vec3 p, uint known, int knownLevel) {
     uvec3 cell = uvec3(clamp(floor(p), vec3(0.0), vec3(float((1 << uLevels) - 1))));
     uint own = knownLevel == uLevels - 1 ? childOf(known, childSlot(cell)) : NONE;
@@ -291,7 +299,7 @@ vec4 sampleVoxels(vec3 p, uint known, int knownLevel) {
         q[a] += along ? 1.0 : -1.0;
         uint next = nodeAhead(q, uLevels, cell, known, knownLevel, 2 * a + (along ? 1 : 0));
         vec4 ownSeen = voxelSeen(own, i, ownShare);
-        if (cell[a] == coneStartCell[a]) ownSeen.rgb = vec3(0.0);  // not yet out of its start layer along a
+        if (own != NONE && cell[a] == coneStartCell[a] && litBehind(own, a, inCell[a], along)) ownSeen.rgb = vec3(0.0);
         value += weight * (ownSeen + voxelSeen(next, i, 1.0 - ownShare));
     }
     return value;

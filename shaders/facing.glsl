@@ -26,7 +26,24 @@ vec4 voxelSeenAlong(uint cell, int i, float alpha) {
 }
 
 // Stores the six shares of `cell`: towards +x −x +y −y (`xy`), +z −z (`z`), as exitShare reads them.
+// Keeps the lit place beside them.
 void storeExitShares(uint cell, vec4 xy, vec2 z) {
     cellExitShares[2u * cell] = xy;
-    cellExitShares[2u * cell + 1u] = vec4(z, 0.0, 0.0);
+    cellExitShares[2u * cell + 1u].xy = z;
+}
+
+// Where in `cell` its reflected light comes from: the flux-weighted mean place of its photons
+// across the cell (0..1 per axis), kept beside its exit shares in 6 bits per axis (a float holding
+// an integer, exact on every GPU; 0: not known). A cell holds its surface without where it lies
+// in it; a narrow cone inside the cell uses the place to tell whether the lit surface lies ahead
+// of it or behind it (cone_march.glsl, sampleVoxels).
+const float LIT_PLACE_STEPS = 63.0;
+void storeLitPlace(uint cell, bool known, vec3 place) {
+    uvec3 q = uvec3(round(clamp(place, 0.0, 1.0) * LIT_PLACE_STEPS));
+    cellExitShares[2u * cell + 1u].z = known ? float(1u + q.x + 64u * q.y + 4096u * q.z) : 0.0;
+}
+bool litPlace(uint cell, out vec3 place) {
+    uint code = uint(cellExitShares[2u * cell + 1u].z);
+    place = vec3(uvec3(code - 1u, (code - 1u) >> 6, (code - 1u) >> 12) & 63u) / LIT_PLACE_STEPS;
+    return code != 0u;
 }

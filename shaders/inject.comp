@@ -37,7 +37,8 @@ void touchColumnPartners(uint node) {
 }
 
 // Integer sums only, so the result does not depend on the order of the photons.
-void addPhoton(uint node, vec3 units, vec3 litNormal) {
+// `place`: the photon's place in the cell, 0..1 along each axis.
+void addPhoton(uint node, vec3 units, vec3 litNormal, vec3 place) {
     uint index = (node - uLevelStart[uLevels]) * ACCUMULATOR_WORDS;
     uvec3 rounded = uvec3(round(units));
     for (uint c = 0u; c < 3u; ++c) accumulate64(index + 2u * c, rounded[c]);
@@ -46,6 +47,7 @@ void addPhoton(uint node, vec3 units, vec3 litNormal) {
     for (uint a = 0u; a < 3u; ++a) {
         accumulate64(index + LIT_SIDE_WORDS + 4u * a, uint(min(round(weight * max(litNormal[a], 0.0)), 4.0e9)));
         accumulate64(index + LIT_SIDE_WORDS + 4u * a + 2u, uint(min(round(weight * max(-litNormal[a], 0.0)), 4.0e9)));
+        accumulate64(index + LIT_PLACE_WORDS + 2u * a, uint(min(round(weight * clamp(place[a], 0.0, 1.0)), 4.0e9)));
     }
     // The first photon of the node touches its partners, also when the node itself was touched
     // before as another cell's partner.
@@ -83,9 +85,13 @@ void main() {
         return;
     }
     float share = 1.0;  // of the flux for `node`
+    // The photon's place across its cell; in `other`, on the face shared with this one.
+    vec3 nodePlace = f, otherPlace = f;
+    otherPlace[axis] = f[axis] < 0.5 ? 1.0 : 0.0;
     if (node == NONE) {
         node = other;
         other = NONE;
+        nodePlace = otherPlace;
     } else if (other != NONE) {
         float a = cellArea[node - uLevelStart[uLevels]], b = cellArea[other - uLevelStart[uLevels]];
         share = a + b > 0.0 ? a / (a + b) : 0.5;
@@ -93,6 +99,6 @@ void main() {
     // Clamped so that even an albedo far above 1 (a broken material) cannot wrap a word.
     vec3 units = min(flux * uUnitsPerRelativeFlux, vec3(2147483648.0));
     vec3 litNormal = normalize(texelFetch(uLightNormal, texel, 0).xyz);
-    addPhoton(node, units * share, litNormal);
-    if (other != NONE && share < 1.0) addPhoton(other, units * (1.0 - share), litNormal);
+    addPhoton(node, units * share, litNormal, nodePlace);
+    if (other != NONE && share < 1.0) addPhoton(other, units * (1.0 - share), litNormal, otherPlace);
 }

@@ -6,8 +6,12 @@
 // photon adds its flux (R + G + B units) times max(±n_a, 0) of its lit-side normal n, × LIT_SIDE_SCALE,
 // in 64 bits. Weighted by flux, not counted: photons of a bright and a dim light that meet in one
 // voxel (a wall lit outside by the sun and inside by a lamp) send each side its own light.
+// Then where in the cell its light lands [18..23]: per axis the flux (× LIT_SIDE_SCALE) times the
+// photon's place across the cell along that axis (0..1), in 64 bits; over the flux, the lit
+// surface's mean place (facing.glsl, litPlace).
 const uint ACCUMULATOR_WORDS = RADIANCE_ACCUMULATOR_WORDS;
 const uint LIT_SIDE_WORDS = 6u;  // first word of the lit sides
+const uint LIT_PLACE_WORDS = 18u;  // first word of the lit place
 // A photon's flux is at most 3 × 2^24 units (the brightest texel is 2^24, an albedo at most 1), so
 // one photon's term stays below 2^32 and keeps ~1/31 of a unit's resolution.
 const float LIT_SIDE_SCALE = 31.0;

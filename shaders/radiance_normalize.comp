@@ -49,6 +49,12 @@ void photonSums(uint cell, out dvec3 flux, out dvec3 litPlus, out dvec3 litMinus
     litMinus = dvec3(wideSum(sides + 2u), wideSum(sides + 6u), wideSum(sides + 10u));
 }
 
+// The flux-weighted sums of the photons' places across `cell` (radiance_accumulators.glsl).
+dvec3 litPlaceSums(uint cell) {
+    uint base = cell * ACCUMULATOR_WORDS + LIT_PLACE_WORDS;
+    return dvec3(wideSum(base), wideSum(base + 2u), wideSum(base + 4u));
+}
+
 void main() {
     bool valid;
     uint node = workNode(valid);
@@ -60,7 +66,8 @@ void main() {
     photonSums(cell, flux, litPlus, litMinus);
     double area = double(cellArea[cell]);
     uint partners = cellColumns[cell];
-    if (area < double(POOLING_AREA) && partners != 0u) {
+    bool pooled = area < double(POOLING_AREA) && partners != 0u;
+    if (pooled) {
         ivec3 coord = ivec3(unpackCell(nodeCoord[node]));
         for (int bit = 0; bit < 6; ++bit) {
             if ((partners & (1u << bit)) == 0u) continue;
@@ -105,4 +112,8 @@ void main() {
     float emittedShare = 1.0 - reflectedShare;
     storeExitShares(cell, emittedShare + reflectedShare * vec4(towardMinus.x, towardPlus.x, towardMinus.y, towardPlus.y),
                     emittedShare + reflectedShare * vec2(towardMinus.z, towardPlus.z));
+    // Where the reflected light lies in the cell; not known where it is pooled with other cells'
+    // or where the cell emits (emission leaves all of its surface, lit or not).
+    storeLitPlace(cell, !pooled && litWeight > 0.0lf && emitted == vec3(0.0),
+                  litWeight > 0.0lf ? vec3(litPlaceSums(cell) / litWeight) : vec3(0.0));
 }

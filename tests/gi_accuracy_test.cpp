@@ -280,7 +280,8 @@ TEST(GiAccuracy, NarrowConesKeepAClosedRoomBesideASunlitOneDark) {
     // voxel's light leaves upwards, seen by a cone going down) they saw that top as if it lay
     // below them: 8 % of the lit floor's radiance at single pixels with 16 cones, 3 % with 4 at a
     // step of a whole diameter. Until a cone leaves the layer it starts in along an axis it sees
-    // its own voxel's opacity along that axis but not its light (cone_march.glsl, sampleVoxels).
+    // its own voxel's light along that axis only where the voxel's photons landed ahead of it
+    // (cone_march.glsl, sampleVoxels; facing.glsl, litPlace).
     for (const char* cones : {" --cone-rays 16", " --cone-rays 4 --cone-step 1"}) {
         const GreyStats leak = closedRoomLeak(1.3, cones);
         EXPECT_LE(leak.mean, kLeakMean) << cones;

@@ -88,7 +88,7 @@
     X(MAX_CONES, 16)                 /* the largest cone set */                                   \
     X(CELL_ACCUMULATOR_FIELDS, 16)   /* svo_leaves: 32-bit sums per voxel */                      \
     X(PROJECTED_AREA_FIELDS, 12)     /* svo_leaves: area facing +x −x +y −y +z −z, 64 bits each */  \
-    X(RADIANCE_ACCUMULATOR_WORDS, 18) /* inject: flux (3 × 64 bits), lit sides (6 × 64 bits) */\
+    X(RADIANCE_ACCUMULATOR_WORDS, 24) /* inject: flux, lit sides, lit place (12 × 64 bits) */   \
     X(BORDER_COUNT_SLOT, 12)         /* list counts: touched [0, 12), border [12, 24) */          \
     X(MISSED_COUNT_SLOT, 24)         /* list counts: photons that found no voxel */               \
     X(BOUNCE_LIST_COUNT_SLOT, 25)    /* list counts: cells that gather their own bounce */        \
