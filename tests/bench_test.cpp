@@ -208,7 +208,7 @@ TEST(Bench, QuickRunWritesRowsChartAndUsesTheCache) {
     const Csv csv = readCsv(dir / "results" / "bench_quick.csv");
     ASSERT_EQ(csv.rows.size(), 7u) << "4 engine points and 3 path-tracer spp values";
     for (const auto& [kind, label] : std::vector<std::pair<std::string, std::string>>{
-             {"engine", "default"}, {"engine", "cones=1"}, {"engine", "gi=false"}, {"engine", "samples=4"},
+             {"engine", "default"}, {"engine", "cone_rays=1"}, {"engine", "gi=false"}, {"engine", "samples=4"},
              {"pathtracer", "1 spp"}, {"pathtracer", "4 spp"}, {"pathtracer", "16 spp"}})
         ASSERT_TRUE(csv.find(kind, label)) << kind << " " << label;
     for (const auto& r : csv.rows) {
@@ -227,12 +227,12 @@ TEST(Bench, QuickRunWritesRowsChartAndUsesTheCache) {
         }
     }
     const auto& def = *csv.find("engine", "default");
-    const auto& oneCone = *csv.find("engine", "cones=1");
+    const auto& oneCone = *csv.find("engine", "cone_rays=1");
     EXPECT_EQ(def.at("is_default"), "1");
-    EXPECT_EQ(oneCone.at("cones"), "1");
+    EXPECT_EQ(oneCone.at("cone_rays"), "1");
     EXPECT_EQ(oneCone.at("voxel_levels"), def.at("voxel_levels"));
     EXPECT_EQ(oneCone.at("update_passes"), "cone_trace;composite") << "a cone setting re-runs only cone tracing";
-    EXPECT_LT(number(def, "rmse"), number(oneCone, "rmse")) << "five cones must beat one";
+    EXPECT_LT(number(def, "rmse"), number(oneCone, "rmse")) << "four narrow cones must beat one";
     EXPECT_LT(number(def, "indirect_rmse"), number(oneCone, "indirect_rmse"));
     EXPECT_NEAR(number(*csv.find("engine", "gi=false"), "indirect_ratio"), 0.0, 1e-12) << "GI off: no indirect light";
     // Four pixel samples: only the camera's passes re-run, and the averaged pixels are closer to the

@@ -189,7 +189,7 @@ TEST(CliBadInput, UnknownPresetBackendAndValues) {
     expectCleanError(test::runVct("render --scene cornell" + kSmall + "--out /no/such/dir/x.png"), "/no/such/dir");
     expectCleanError(test::runVct("render --scene cornell --cone-rays 65" + kSmall + "--out /tmp/x.png"), "1..64");
     expectCleanError(test::runVct("render --scene cornell --sample-cones wide" + kSmall + "--out /tmp/x.png"),
-                     "--sample-cones must be narrow or set");
+                     "--sample-cones must be narrow or frame");
     expectCleanError(test::runVct("render --scene cornell --dark-material Red" + kSmall + "--out /tmp/x.png"),
                      "white, red, green");
     expectCleanError(test::runVct("render --scene cornell --cone-rays 8 --only-cone 5" + kSmall + "--out /tmp/x.png"),

@@ -23,6 +23,7 @@ RenderSettings indirectSettings(GiResolution resolution, int width, int height) 
     s.lightViewResolution = 1024;
     s.display.aov = Aov::Indirect;
     s.giResolution = resolution;
+    s.cones.rays = 0;  // the cone set: no noise of narrow cones in what blocks change
     return s;
 }
 
@@ -31,8 +32,8 @@ struct IndirectImage {
     ConeStatistics cones;
 };
 
-// `samples` accumulated, all of the cone set: the later samples' narrow cones
-// (render/cone_trace.hpp, conesForSample) would add their noise to what blocks change.
+// `samples` accumulated, all of the cone set: narrow cones (render/cone_trace.hpp, conesForSample)
+// would add their noise to what blocks change.
 IndirectImage renderIndirect(const Scene& scene, GiResolution resolution, int samples, int width = 160,
                              int height = 120) {
     RenderSettings settings = indirectSettings(resolution, width, height);

@@ -31,7 +31,10 @@ namespace {
 constexpr double kLeakMean = 0.005, kLeakLargestPixel = 0.02;  // of the lit floor's radiance
 constexpr double kSheetLargestPixel = 0.05;  // the pixels within a voxel of the sheet (frame.md, Known limits)
 constexpr double kUnderSheetMean = 0.015, kUnderSheetLargestPixel = 0.02;  // of π·Le
-constexpr double kCornellMean[2] = {0.85, 1.1}, kCornellCells[2] = {0.4, 1.4};
+// The default (4 narrow cones) on Cornell: issue 12's bounds (the cone set's cells reached 0.46..1.37).
+constexpr double kCornellMean[2] = {0.9, 1.1}, kCornellCells[2] = {0.75, 1.33};
+// The cone set (`--cone-rays 0`), which errs more: its measured 0.96x [0.46..1.37] with room.
+constexpr double kConeSetCornellMean[2] = {0.85, 1.1}, kConeSetCornellCells[2] = {0.4, 1.4};
 constexpr double kSponzaMean[2] = {0.85, 1.1}, kSponzaCells[2] = {0.75, 1.4};
 constexpr double kFurnaceMeanTolerance = 0.05, kFurnaceLowTolerance = 0.1;  // of 1.5
 constexpr double kFurnaceBouncesTolerance = 0.05;  // of 1.75 and 1.875 (the acceptance bound)
@@ -497,12 +500,18 @@ TEST(GiAccuracy, IndirectLightMatchesThePathTracerOnCornell) {
     expectIndirectWithin(parts, "Cornell 96x72", kCornellMean[0], kCornellMean[1], kCornellCells[0], kCornellCells[1]);
 }
 
+TEST(GiAccuracy, TheConeSetStaysWithinItsBoundsOnCornell) {
+    const IndirectPair parts = indirectParts(test::testDir(), "--scene cornell --width 96 --height 72", 512, " --cone-rays 0");
+    expectIndirectWithin(parts, "Cornell 96x72, the cone set", kConeSetCornellMean[0], kConeSetCornellMean[1],
+                         kConeSetCornellCells[0], kConeSetCornellCells[1]);
+}
+
 TEST(GiAccuracy, PointLitCornellMatchesThePathTracer) {
     // A point light inside the box: six light-view maps (cube faces) serve as shadow map and
     // photon source. Direct light is exact up to pixel sampling; the indirect part is held to
     // the same bounds as the spot-lit box.
     const auto dir = test::testDir();
-    const std::string view = "--scene cornell --width 96 --height 72 --point-pos 0,1.5,0 --point-intensity 3";
+    const std::string view = "--scene cornell --width 160 --height 120 --point-pos 0,1.5,0 --point-intensity 3";
     const ImageF direct = render(dir, "direct", view + " --aov direct");
     const auto full = dir / "reference.pfm", referenceDirect = dir / "reference_direct.pfm";
     const test::CommandResult r = test::runVct("reference -q " + view + " --bounces 1 --spp 512 -o " + full.string() +
@@ -514,7 +523,7 @@ TEST(GiAccuracy, PointLitCornellMatchesThePathTracer) {
     std::printf("[ accuracy ] point-lit Cornell: direct %.4f× the path tracer's\n", directRatio);
     EXPECT_NEAR(directRatio, 1.0, 0.01);
     const IndirectPair parts{bench::subtractImages(render(dir, "final", view), direct), bench::subtractImages(reference, referenceDirectImage)};
-    expectIndirectWithin(parts, "point-lit Cornell 96x72", kCornellMean[0], kCornellMean[1], kCornellCells[0],
+    expectIndirectWithin(parts, "point-lit Cornell 160x120", kCornellMean[0], kCornellMean[1], kCornellCells[0],
                          kCornellCells[1]);
 }
 
@@ -534,7 +543,7 @@ TEST(GiAccuracy, AccumulatedSamplesConvergeToTheNarrowCones) {
     const IndirectPair narrow = indirectParts(dir, view, 512, " --samples 16");
     expectIndirectWithin(narrow, "Cornell 96x72, 16 samples (narrow cones after the first)", kNarrowMean[0],
                          kNarrowMean[1], kNarrowCells[0], kNarrowCells[1]);
-    const std::string setOptions = view + " --samples 16 --sample-cones set";
+    const std::string setOptions = view + " --samples 16 --cone-rays 0 --sample-cones frame";
     const ImageF set = bench::subtractImages(render(dir, "set_final", setOptions),
                                              render(dir, "set_direct", setOptions + " --aov direct"));
     const double narrowError = metrics::rmse(narrow.engine, narrow.reference);

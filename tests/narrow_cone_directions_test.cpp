@@ -48,24 +48,36 @@ std::pair<int, int> fullestAndEmptiestCell(const std::vector<glm::vec4>& points,
 
 }  // namespace
 
-TEST(NarrowConeDirections, OnlyTheLaterSamplesOfTheConeSetTraceNarrowCones) {
-    const ConeSettings set;
-    const SampleCones first = conesForSample(set, 0);
-    EXPECT_EQ(first.cones, set);  // a one-sample frame is the plain frame
-    EXPECT_EQ(first.raySequence, -1);
-    for (int sample : {1, 2, 15, 1000}) {
-        const SampleCones later = conesForSample(set, sample);
-        EXPECT_EQ(later.cones.rays, kNarrowConesPerLaterSample) << sample;
-        EXPECT_EQ(later.cones.step, kLaterSampleNarrowConeStep) << sample;
-        EXPECT_EQ(later.raySequence, (sample - 1) * kNarrowConesPerLaterSample) << sample;
+TEST(NarrowConeDirections, TheLaterSamplesTraceOneNarrowConeEach) {
+    ConeSettings set;
+    set.rays = 0;  // `--cone-rays 0`
+    const ConeSettings narrow;  // the default: kDefaultNarrowCones
+    ASSERT_EQ(narrow.rays, kDefaultNarrowCones);
+    for (const ConeSettings& frame : {set, narrow}) {
+        const SampleCones first = conesForSample(frame, 0);
+        EXPECT_EQ(first.cones, frame);  // a one-sample frame is the plain frame
+        EXPECT_EQ(first.raySequence, -1);
+        for (int sample : {1, 2, 15, 1000}) {
+            const SampleCones later = conesForSample(frame, sample);
+            EXPECT_EQ(later.cones.rays, kNarrowConesPerLaterSample) << sample;
+            EXPECT_EQ(coneStep(later.cones), kNarrowConeStep) << sample;
+            EXPECT_EQ(later.raySequence, (sample - 1) * kNarrowConesPerLaterSample) << sample;
+        }
+        ConeSettings everySample = frame;
+        everySample.narrowConesAfterFirstSample = false;  // `--sample-cones frame`
+        EXPECT_EQ(conesForSample(everySample, 5).cones, everySample);
+        EXPECT_EQ(conesForSample(everySample, 5).raySequence, -1);
     }
-    ConeSettings everySample = set;
-    everySample.narrowConesAfterFirstSample = false;  // `--sample-cones set`
-    EXPECT_EQ(conesForSample(everySample, 5).cones, everySample);
-    ConeSettings narrow = set;
-    narrow.rays = 16;  // `--cone-rays 16`: as asked, at every sample
-    EXPECT_EQ(conesForSample(narrow, 5).cones, narrow);
-    EXPECT_EQ(conesForSample(narrow, 5).raySequence, -1);
+}
+
+TEST(NarrowConeDirections, EachKindOfConeStepsByItsOwnLengthUnlessOneIsGiven) {
+    ConeSettings s;
+    EXPECT_EQ(coneStep(s), kNarrowConeStep);
+    s.rays = 0;
+    EXPECT_EQ(coneStep(s), kConeSetStep);
+    s.step = 0.75f;
+    EXPECT_EQ(coneStep(s), 0.75f);
+    EXPECT_EQ(coneStep(voxelGatherCones(ConeSettings{})), kConeSetStep);  // the bounces' gathers trace the set
 }
 
 TEST(NarrowConeDirections, SamplesContinueOneEvenlySpreadSequence) {

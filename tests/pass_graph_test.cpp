@@ -253,19 +253,19 @@ TEST_F(PassGraphTest, BouncesFollowTheLightsAndTheirCountNeverTheCamera) {
     EXPECT_TRUE(renderer.readHdr().rgba == threeBounces.rgba) << "back to the default resolution, as before";
 
     // What only the pixels trace: the voxels keep gathering with the cone set.
-    s.cones.rays = 4;
+    s.cones.rays = 0;
     renderer.setSettings(s);
     renderer.renderFrame(moved(camera));
-    EXPECT_EQ(ran(renderer), (Names{Pass::ConeTrace, Pass::Composite})) << "narrow cones: no bounce again";
+    EXPECT_EQ(ran(renderer), (Names{Pass::ConeTrace, Pass::Composite})) << "the cone set: no bounce again";
     s.cones.narrowConesAfterFirstSample = false;
     renderer.setSettings(s);
     renderer.renderFrame(moved(camera));
     EXPECT_EQ(ran(renderer), (Names{Pass::ConeTrace, Pass::Composite})) << "the cones of later samples: no bounce again";
-    s.cones.rays = 0;
+    s.cones.rays = kDefaultNarrowCones;
     s.cones.narrowConesAfterFirstSample = true;
     renderer.setSettings(s);
     renderer.renderFrame(moved(camera));
-    EXPECT_TRUE(renderer.readHdr().rgba == threeBounces.rgba) << "back to the cone set, as before";
+    EXPECT_TRUE(renderer.readHdr().rgba == threeBounces.rgba) << "back to the narrow cones, as before";
 
     s.bounces = 1;
     renderer.setSettings(s);

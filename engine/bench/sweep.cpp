@@ -98,16 +98,17 @@ void applyParameter(PointSettings& s, const std::string& name, const Json& v) {
         s.cones.rays = integer(v, what, 0, 64);
         validateConeSettings(s.cones);
     } else if (name == "sample_cones") {
-        if (!v.is_string()) fail(what, " must be \"narrow\" or \"set\"");
+        if (!v.is_string()) fail(what, " must be \"narrow\" or \"frame\"");
         try {
             s.cones.narrowConesAfterFirstSample = parseSampleCones(v.get<std::string>());
         } catch (const Error&) {
-            fail(what, " must be \"narrow\" or \"set\", not \"", v.get<std::string>(), "\"");
+            fail(what, " must be \"narrow\" or \"frame\", not \"", v.get<std::string>(), "\"");
         }
     } else if (name == "cone_aperture") {
         s.cones.apertureScale = float(number(v, what, 1e-3, 4.0));
     } else if (name == "cone_step") {
-        s.cones.step = float(number(v, what, 0.05, 4.0));
+        s.cones.step = float(number(v, what, 0.0, 4.0));
+        validateConeSettings(s.cones);
     } else if (name == "cone_offset") {
         s.cones.offset = float(number(v, what, 0.0, 16.0));
     } else if (name == "cone_lift") {

@@ -23,8 +23,8 @@ void addRenderSettingsOptions(CLI::App& command, RenderSettingsOptions& o) {
     command.add_option("--pcf-radius", o.pcfRadius, "shadow filter radius in texels (0 = one tap)")
         ->capture_default_str();
     command.add_option("--view", o.view,
-                       "lit (the lit image), voxels (the octree's albedo), radiance (the octree's radiance: of the voxels, the light each sends towards the eye) or cones (what a cone "
-                       "of the set's cap, or with --cone-rays a narrow cone, brings back from the eye: compare with --aov direct)")
+                       "lit (the lit image), voxels (the octree's albedo), radiance (the octree's radiance: of the voxels, the light each sends towards the eye) or cones (what a narrow "
+                       "cone, or with --cone-rays 0 a cone of the set's cap, brings back from the eye: compare with --aov direct)")
         ->capture_default_str();
     command.add_option("--gi", o.gi, "indirect light by cone tracing: on or off")->capture_default_str();
     command.add_flag("--no-photons", o.noPhotons, "inject no light (cones then see only emission; AO stays)");
@@ -34,7 +34,8 @@ void addRenderSettingsOptions(CLI::App& command, RenderSettingsOptions& o) {
     command.add_option("--cones", o.cones.cones, "diffuse cone set: 1, 5, 6, 9 or 16 cones")->capture_default_str();
     command.add_option("--cone-aperture", o.cones.apertureScale, "factor on the derived cone apertures (tan)")
         ->capture_default_str();
-    command.add_option("--cone-step", o.cones.step, "cone step length as a fraction of its diameter")
+    command.add_option("--cone-step", o.cones.step,
+                       "cone step length as a fraction of its diameter (0: 0.5 for the cone set, 1 for narrow cones)")
         ->capture_default_str();
     command.add_option("--cone-offset", o.cones.offset, "cone start offset along the normal, in voxels")
         ->capture_default_str();
@@ -42,14 +43,14 @@ void addRenderSettingsOptions(CLI::App& command, RenderSettingsOptions& o) {
                        "extra offset along the normal per unit of cone diameter (against self-illumination)")
         ->capture_default_str();
     command.add_option("--cone-rays", o.cones.rays,
-                       "narrow cones per traced pixel instead of the cone set (1..64; 0: the cone set): "
-                       "closer to the path tracer, about 16x the cone-tracing time at 16")
+                       "narrow cones per traced pixel (1..64), or 0: the cone set (--cones), about 2.6x faster "
+                       "to trace than 4 narrow cones and further from the path tracer")
         ->capture_default_str();
     command.add_option("--sample-cones", o.sampleCones,
-                       "what the samples after the first of an accumulated frame (--samples, the viewer) trace where "
-                       "the frame traces the cone set: narrow (one narrow cone per traced pixel, its direction "
-                       "stratified over the samples: the average converges to the narrow cones' far smaller error) "
-                       "or set (the cone set at every sample)")
+                       "what the samples after the first of an accumulated frame (--samples, the viewer) trace: "
+                       "narrow (one narrow cone per traced pixel, its direction stratified over the samples: the "
+                       "average converges to the narrow cones' small error) or frame (the frame's cones at every "
+                       "sample)")
         ->capture_default_str();
     command.add_option("--only-cone", o.cones.onlyCone,
                        "diagnostic: only cone K of the set gathers light (0 = the cone along the normal; with "

@@ -82,8 +82,9 @@ void validateConeSettings(const ConeSettings& s) {
     makeConeSet(s.cones);  // throws for an unknown set
     if (!(s.apertureScale > 0.0f && s.apertureScale <= 4.0f))
         fail("--cone-aperture ", s.apertureScale, " is out of range; use a factor in (0, 4]");
-    if (!(s.step >= 0.05f && s.step <= 4.0f))
-        fail("--cone-step ", s.step, " is out of range; use 0.05..4 (fraction of the cone diameter)");
+    if (!(s.step == 0.0f || (s.step >= 0.05f && s.step <= 4.0f)))
+        fail("--cone-step ", s.step, " is out of range; use 0.05..4 (fraction of the cone diameter) or 0 (",
+             kConeSetStep, " for the cone set, ", kNarrowConeStep, " for narrow cones)");
     if (!(s.offset >= 0.0f && s.offset <= 16.0f))
         fail("--cone-offset ", s.offset, " is out of range; use 0..16 voxels");
     if (!(s.lift >= 0.0f && s.lift <= 4.0f))
@@ -118,7 +119,7 @@ void setConeMarchUniforms(gl::ComputeCall& call, const Octree& octree, const Rad
     glProgramUniform1fv(p, glGetUniformLocation(p, "uConeWeight"), GLsizei(cones.size()), weights.data());
     const float diagonal = float(octree.grid.resolution()) * 1.7320508f;
     call.uniform("uConeCount", int(cones.size()))
-        .uniform("uConeStep", settings.step)
+        .uniform("uConeStep", coneStep(settings))
         .uniform("uConeOffset", settings.offset)
         .uniform("uConeLift", settings.lift)
         .uniform("uMaxDistance", settings.maxDistance > 0.0f ? settings.maxDistance : diagonal)
@@ -138,21 +139,26 @@ void setConeMarchUniforms(gl::ComputeCall& call, const Octree& octree, const Rad
         .storage(gl::SSBO_CELL_EXIT_SHARES, bounced ? radiance.bouncedCellExitShares : radiance.cellExitShares);
 }
 
+float coneStep(const ConeSettings& settings) {
+    if (settings.step > 0.0f) return settings.step;
+    return settings.rays > 0 ? kNarrowConeStep : kConeSetStep;
+}
+
 SampleCones conesForSample(const ConeSettings& frame, int sample) {
     SampleCones s{frame, -1};
-    if (sample < 1 || frame.rays > 0 || !frame.narrowConesAfterFirstSample) return s;
+    if (sample < 1 || !frame.narrowConesAfterFirstSample) return s;
     s.cones.rays = kNarrowConesPerLaterSample;
-    s.cones.step = kLaterSampleNarrowConeStep;
+    s.cones.step = kNarrowConeStep;
     s.raySequence = (sample - 1) * kNarrowConesPerLaterSample;
     return s;
 }
 
 bool parseSampleCones(const std::string& name) {
-    if (name != "narrow" && name != "set") fail("--sample-cones must be narrow or set, not '", name, "'");
+    if (name != "narrow" && name != "frame") fail("--sample-cones must be narrow or frame, not '", name, "'");
     return name == "narrow";
 }
 
-const char* sampleConesName(bool narrowConesAfterFirstSample) { return narrowConesAfterFirstSample ? "narrow" : "set"; }
+const char* sampleConesName(bool narrowConesAfterFirstSample) { return narrowConesAfterFirstSample ? "narrow" : "frame"; }
 
 ConeSettings voxelGatherCones(ConeSettings settings) {
     settings.rays = 0;

@@ -19,7 +19,20 @@ namespace vct {
 // closest to the path tracer in RMSE on every view.
 constexpr float kNarrowConeTan = 0.03f;
 constexpr int kMaxNarrowCones = 64;
-constexpr int kDefaultNarrowCones = 16;  // what the viewer's key turns on
+// The default: four narrow cones per traced pixel rather than the five-cone set. The set's few
+// wide cones each make one opacity of a footprint that a surface covers only in part (a floor
+// seen across the footprint collected twice over, a whole cone stopped by the shade in front of
+// a sunlit strip), biases that no setting removed and that differ from view to view; narrow
+// cones converge to the path tracer as the voxels shrink, and four of them, with the traced
+// pixels' blocks and the edge-aware filter averaging their noise, already come closer than the
+// set on most views, for about 2.6× the set's cone tracing on llvmpipe (docs/benchmark.md,
+// "Four narrow cones by default").
+constexpr int kDefaultNarrowCones = 4;
+// Step length / cone diameter of each kind of cone when `--cone-step` is 0 (its default). Narrow
+// cones come as close to the path tracer with a step of a whole diameter as with half, in half
+// the samples; the set was tuned at half.
+constexpr float kConeSetStep = 0.5f;
+constexpr float kNarrowConeStep = 1.0f;
 // Narrow cones traced per dispatch, each dispatch adding to the last. llvmpipe ends every loop of
 // a shader invocation once all of them together have run 65535 iterations (gallivm's
 // LP_MAX_TGSI_LOOP_ITERATIONS, shared by every loop), silently: a pixel's sixteen narrow cones
@@ -29,34 +42,34 @@ constexpr int kNarrowConesPerDispatch = 4;
 struct ConeSettings {
     int cones = 5;              // 1, 5, 6, 9 or 16 (cone_set.hpp)
     float apertureScale = 1.0f; // multiplies the derived half-angles (tan), for the benchmark sweep
-    float step = 0.5f;          // step length / cone diameter
+    float step = 0.0f;          // step length / cone diameter; 0: the kind's own (coneStep)
     float offset = 1.5f;        // start offset along the normal, voxels
     float lift = 0.0f;          // extra normal offset per unit of cone diameter
     float maxDistance = 0.0f;   // voxels; 0 = through the whole volume
     bool bricks = true;         // false: the nearest brick sample, no interpolation (`--no-bricks`)
     int onlyCone = -1;          // diagnostic: only this cone of the set gathers (`--only-cone`); −1: all
-    // Narrow cones instead of the cone set (`--cone-rays`): this many (1..kMaxNarrowCones) of
-    // half-angle atan(kNarrowConeTan × apertureScale), their axes spread anew at every pixel; 0: the
-    // cone set.
-    int rays = 0;
+    // Narrow cones (`--cone-rays`): this many (1..kMaxNarrowCones) of half-angle
+    // atan(kNarrowConeTan × apertureScale), their axes spread anew at every pixel; 0: the cone set.
+    int rays = kDefaultNarrowCones;
     // What the samples after the first of an accumulated frame trace (`--samples`, the viewer's
-    // refinement) where the frame traces the cone set: narrow cones (conesForSample; true, the
-    // default) or the cone set again (`--sample-cones set`).
+    // refinement): one narrow cone each (conesForSample; true, the default) or the frame's cones
+    // again (`--sample-cones frame`).
     bool narrowConesAfterFirstSample = true;
 
     bool operator==(const ConeSettings&) const = default;
 };
 
-// The narrow cones that the later samples of an accumulated frame trace in place of the cone set.
-// The cone set's errors are biases of its few wide cones (light collected across a footprint,
-// blocked by a wall beside the path), the same at every sample, so averaging samples of it
-// converges to its bias; narrow cones err much less and spread the rest as noise, which
-// averaging removes. One cone per traced pixel and sample: over N samples a block of pixels has
-// traced N directions, stratified (SampleCones::raySequence), for less than the cone set's time
-// per sample. A step of a whole cone diameter (the set's default is half): for narrow cones as close
-// to the path tracer as half a diameter, in less time (docs/benchmark.md, "Narrow cones").
+// The step length of `settings`' cones, in cone diameters: its own, or the kind's (kConeSetStep,
+// kNarrowConeStep).
+float coneStep(const ConeSettings& settings);
+
+// The narrow cones that the later samples of an accumulated frame trace. The cone set's errors
+// are biases of its few wide cones (light collected across a footprint, blocked by a wall beside
+// the path), the same at every sample, so averaging samples of it converges to its bias; narrow
+// cones err much less and spread the rest as noise, which averaging removes. One cone per traced
+// pixel and sample, whatever the frame traces: over N samples a block of pixels has traced N
+// directions more, stratified (SampleCones::raySequence), for less than a frame's cones per sample.
 constexpr int kNarrowConesPerLaterSample = 1;
-constexpr float kLaterSampleNarrowConeStep = 1.0f;
 
 // What pixel sample `sample` of a frame traces.
 struct SampleCones {
@@ -66,12 +79,12 @@ struct SampleCones {
     // together cover the hemisphere evenly; -1: every apex draws its own (shaders/cone_march.glsl).
     int raySequence = -1;
 };
-// Sample 0, alone in a plain frame, traces `frame` as it is. With the cone set and
-// narrowConesAfterFirstSample, every later sample k traces kNarrowConesPerLaterSample narrow
-// cones, the (k−1)-th of the sequence; the average over N samples then holds the cone set with
-// weight 1/N. Explicit narrow cones (`--cone-rays`) trace as asked at every sample.
+// Sample 0, alone in a plain frame, traces `frame` as it is. With narrowConesAfterFirstSample,
+// every later sample k traces kNarrowConesPerLaterSample narrow cones, the (k−1)-th of the
+// sequence; the average over N samples then holds the frame's own cones with weight 1/N.
+// Without, every sample traces `frame`.
 SampleCones conesForSample(const ConeSettings& frame, int sample);
-// `--sample-cones`: "narrow" (narrowConesAfterFirstSample) or "set"; throws naming the option.
+// `--sample-cones`: "narrow" (narrowConesAfterFirstSample) or "frame"; throws naming the option.
 bool parseSampleCones(const std::string& name);
 const char* sampleConesName(bool narrowConesAfterFirstSample);
 

@@ -149,7 +149,7 @@ const std::string& keyHelp() {
         "  P            photon injection on/off\n"
         "  N            light bounces: 1, 2, ... 8, then 1 (one bounce is the default)\n"
         "  H            GI resolution: cones at every pixel / at one pixel of each 2x2 block\n"
-        "  C            the cone set / 16 narrow cones per pixel (closer to the path tracer, slower)\n"
+        "  C            4 narrow cones per pixel (the default: closer to the path tracer) / the cone set (faster)\n"
         "  V            voxel view (octree albedo) on/off;  Shift+V: radiance view\n"
         "  [ ]          voxel views: coarser / finer octree level\n"
         "  1..6         output: final, direct, indirect, ao, albedo, normal\n"

@@ -15,7 +15,7 @@ enum class Action {
     TogglePhotons,       // P
     NextBounceCount,     // N       bounces 1, 2, … kMaxBounces, then 1 again
     ToggleGiResolution,  // H       cones at: auto -> every pixel -> 2×2 blocks -> 4×4 blocks -> auto
-    ToggleNarrowCones,   // C       the cone set <-> 16 narrow cones per traced pixel (`--cone-rays`)
+    ToggleNarrowCones,   // C       narrow cones per traced pixel (`--cone-rays`) <-> the cone set
     ToggleVoxelView,     // V       lit <-> octree albedo
     ToggleRadianceView,  // Shift+V lit <-> octree radiance
     CoarserLevel,        // [       voxel views: one octree level up

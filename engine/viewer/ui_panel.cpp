@@ -256,7 +256,11 @@ void settingsSection(ViewerState& state, bool& changed) {
         changed = true;
     }
     changed |= ImGui::SliderFloat("aperture x", &s.cones.apertureScale, 0.1f, 4.0f, "%.2f", ImGuiSliderFlags_AlwaysClamp);
-    changed |= ImGui::SliderFloat("step (diameters)", &s.cones.step, 0.05f, 4.0f, "%.2f", ImGuiSliderFlags_AlwaysClamp);
+    if (ImGui::SliderFloat("step (diameters; 0: the cones' own)", &s.cones.step, 0.0f, 4.0f, "%.2f",
+                           ImGuiSliderFlags_AlwaysClamp)) {
+        if (s.cones.step > 0.0f) s.cones.step = std::max(s.cones.step, 0.05f);  // validateConeSettings' least
+        changed = true;
+    }
     changed |= ImGui::SliderFloat("offset (voxels)", &s.cones.offset, 0.0f, 16.0f, "%.2f", ImGuiSliderFlags_AlwaysClamp);
     changed |= ImGui::SliderFloat("lift", &s.cones.lift, 0.0f, 4.0f, "%.2f", ImGuiSliderFlags_AlwaysClamp);
     changed |= ImGui::SliderInt("PCF radius", &s.pcfRadius, 0, 8, "%d", ImGuiSliderFlags_AlwaysClamp);
