@@ -37,7 +37,7 @@ struct Filtered {
     std::vector<float> input, output, position;  // RGBA per pixel, rows as GL stores them
 };
 
-Filtered filterOverFloorAndBox(Irradiance irradiance) {
+Filtered filterOverFloorAndBox(Irradiance irradiance, float sigmaVoxels = kDefaultGiFilterVoxels) {
     auto context = gl::createContext(gl::defaultBackend());
     test::ObjWriter obj;
     obj.material("grey", glm::vec3(0.5f));
@@ -65,7 +65,7 @@ Filtered filterOverFloorAndBox(Irradiance irradiance) {
     gl::Texture traced = gl::createTexture2D(GL_RGBA32F, kWidth, kHeight, 1, "test irradiance");
     glTextureSubImage2D(traced.id(), 0, 0, 0, kWidth, kHeight, GL_RGBA, GL_FLOAT, f.input.data());
     IndirectFilter filter(kWidth, kHeight);
-    f.output = readRgba(filter.render(gbuffer, traced.id(), 0, kVoxelSize, kDefaultGiFilterVoxels));
+    f.output = readRgba(filter.render(gbuffer, traced.id(), 0, kVoxelSize, sigmaVoxels));
     return f;
 }
 
@@ -87,29 +87,32 @@ float noisyFloor(int x, int y, const float* p) { return rampAndBox(x, y, p) + ((
 }  // namespace
 
 TEST(IndirectFilter, KeepsALinearChangeUpToTheEdgesAndOtherSurfacesOut) {
-    const Filtered f = filterOverFloorAndBox(rampAndBox);
-    double floorWorst = 0.0, boxWorst = 0.0;
-    int floorPixels = 0, boxPixels = 0;
-    for (std::size_t i = 0; i < f.output.size(); i += 4) {
-        const double error = std::abs(f.output[i] - f.input[i]);
-        if (onFloor(&f.position[i]) && awayFromBox(&f.position[i])) {
-            floorWorst = std::max(floorWorst, error);
-            ++floorPixels;
-        } else if (onBoxTop(&f.position[i])) {
-            boxWorst = std::max(boxWorst, error);
-            ++boxPixels;
+    // The plane fit at σ 4 voxels, and at the default's 8, whose wider kernel reaches further past
+    // the floor's edges (measured 0.0139 and 0.0290; a mean instead of a plane left the edge
+    // pixels 0.03 off at σ 4).
+    for (const float sigma : {4.0f, kDefaultGiFilterVoxels}) {
+        const Filtered f = filterOverFloorAndBox(rampAndBox, sigma);
+        double floorWorst = 0.0, boxWorst = 0.0;
+        int floorPixels = 0, boxPixels = 0;
+        for (std::size_t i = 0; i < f.output.size(); i += 4) {
+            const double error = std::abs(f.output[i] - f.input[i]);
+            if (onFloor(&f.position[i]) && awayFromBox(&f.position[i])) {
+                floorWorst = std::max(floorWorst, error);
+                ++floorPixels;
+            } else if (onBoxTop(&f.position[i])) {
+                boxWorst = std::max(boxWorst, error);
+                ++boxPixels;
+            }
         }
+        std::printf("[ filter ] σ %.0f voxels: ramp 0.375..1.625 on %d floor pixels away from the box: worst error "
+                    "%.4f; flat box top (5) on %d: %.4f\n",
+                    sigma, floorPixels, floorWorst, boxPixels, boxWorst);
+        ASSERT_GT(floorPixels, kWidth * kHeight / 2);
+        ASSERT_GT(boxPixels, 200);
+        // Without the tangent plane's weight the box top, 4.8 voxels above the floor, fell from 5 to 3.0.
+        EXPECT_LT(floorWorst, sigma <= 4.0f ? 0.02 : 0.035) << sigma;
+        EXPECT_LT(boxWorst, 0.003) << sigma;
     }
-    std::printf("[ filter ] ramp 0.375..1.625 on %d floor pixels away from the box: worst error %.4f; flat box top "
-                "(5) on %d: %.4f\n",
-                floorPixels, floorWorst, boxPixels, boxWorst);
-    ASSERT_GT(floorPixels, kWidth * kHeight / 2);
-    ASSERT_GT(boxPixels, 200);
-    // A mean instead of a plane left the floor's edge pixels 0.03 off and pulled the box top 0.007
-    // towards the floor; without the tangent plane's weight the box top, 4.8 voxels above the
-    // floor, fell from 5 to 3.0.
-    EXPECT_LT(floorWorst, 0.02);
-    EXPECT_LT(boxWorst, 0.003);
 }
 
 TEST(IndirectFilter, SmoothsWhatVariesFromPixelToPixel) {
