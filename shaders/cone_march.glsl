@@ -122,9 +122,9 @@ uint slabAhead(uint node, vec3 inBrick, int i, float ahead, out vec3 at) {
 // would give it, had the empty node a brick. A narrow cone reads one level and steps as far as
 // its spacing, so a slab is counted once only if the samples on both sides of its face read it;
 // without this read a sheet in the first slab past an empty node was counted by a quarter to
-// three quarters, by the phase of the steps, and a floor under a sheet saw 2.7 % of the emitter
-// above the sheet. (Across the axis the same read adds to the light a cone collects from a surface
-// beside its path, which it over-collects already: Cornell 1.06× → 1.09× with 16 cones.)
+// three quarters, by the phase of the steps, and a floor under a sheet saw the emitter above the
+// sheet through it. (Across the axis the same read would add to the light a cone collects from a
+// surface beside its path, which narrow cones over-collect already.)
 uint slabAheadOfEmpty(int level, vec3 p, uvec3 cell, uint known, int knownLevel, int i, bool faceRead, out vec3 at,
                       out float share) {
     int a = i >> 1;
@@ -210,15 +210,15 @@ float coneLod(float t, float tanHalfAngle, vec3 direction, vec3 normal) {
     return min(log2(diameter), log2(max(height, 1.0)) - 1.0);
 }
 
-// The length of the march's step at t: uConeStep × the cone's diameter, but for a narrow cone
-// never longer than the spacing of the one level its sample reads (the voxels: one voxel). Its
-// reads cover one spacing ahead along each direction; a longer step leaves gaps between them in
-// which a thin sheet goes unseen. (The cone set blends two levels, the finer at least half its
-// diameter: its default step of half a diameter leaves none.)
-float stepLength(float t, float tanHalfAngle, vec3 direction, vec3 normal) {
-    float step = uConeStep * coneDiameter(t, tanHalfAngle);
+// The length of the march's step for a cone of `diameter` sampled at `lod` (coneLod): uConeStep ×
+// the diameter, but for a narrow cone never longer than the spacing of the one level its sample
+// reads (the voxels: one voxel). Its reads cover one spacing ahead along each direction; a longer
+// step leaves gaps between them in which a thin sheet goes unseen. (The cone set blends two
+// levels, the finer at least half its diameter: its default step of half a diameter leaves none.)
+float stepLength(float diameter, float lod) {
+    float step = uConeStep * diameter;
     if (uRayCount == 0) return step;
-    float lod = clamp(coneLod(t, tanHalfAngle, direction, normal), 0.0, float(uLevels - 1));
+    lod = clamp(lod, 0.0, float(uLevels - 1));
     float spacing = exp2(floor(lod) + (fract(lod) >= 0.5 ? 1.0 : 0.0));  // the level sampleRadiance reads
     return min(step, spacing);
 }
@@ -273,9 +273,8 @@ vec4 voxelSeen(uint voxel, int i, float share) {
 // a cone that starts in the layer of another surface cannot tell on which side of it it is: cones
 // from the top of a wall just under a ceiling whose top is sunlit travel inside the ceiling's
 // voxels, below the ceiling, and read the light of its top, which leaves upwards, as if the
-// ceiling lay below them (a closed room beside a sunlit one: up to 10 % of the lit floor's
-// radiance at single pixels). A cone that crossed into a layer from outside has the surfaces there
-// ahead of it. Where the place is not known (emission, pooled slivers) the light is seen.
+// ceiling lay below them (a closed room beside a sunlit one lit up at single pixels). A cone that
+// crossed into a layer from outside has the surfaces there ahead of it. Where the place is not known (emission, pooled slivers) the light is seen.
 uvec3 coneStartCell = uvec3(0u);  // the cell a cone starts in (traceCone)
 
 bool litBehind(uint voxel, int a, float at, bool along) {
@@ -401,8 +400,8 @@ vec4 traceCone(vec3 origin, vec3 normal, vec3 direction, float tanHalfAngle) {
         float tSkip;
         vec3 emptyLo;
         int emptyLevel;
-        if (!sampleRadiance(p, coneLod(t, tanHalfAngle, direction, normal), origin, invDirection, value, tSkip, emptyLo,
-                            emptyLevel)) {
+        float lod = coneLod(t, tanHalfAngle, direction, normal);
+        if (!sampleRadiance(p, lod, origin, invDirection, value, tSkip, emptyLo, emptyLevel)) {
             // Skip the empty node along the very sample sequence a plain march would take
             // (arithmetic only, no lookups): jumping straight to the node's exit would shift the
             // step phase from pixel to pixel and print the node grid into the image as moiré.
@@ -411,8 +410,9 @@ vec4 traceCone(vec3 origin, vec3 normal, vec3 direction, float tanHalfAngle) {
             float size = float(1 << (uLevels - emptyLevel));
             bool skip = true;
             while (skip) {
-                t += stepLength(t, tanHalfAngle, direction, normal);
-                int coarseLevel = coarseLevelFor(coneLod(t, tanHalfAngle, direction, normal));
+                t += stepLength(coneDiameter(t, tanHalfAngle), lod);
+                lod = coneLod(t, tanHalfAngle, direction, normal);
+                int coarseLevel = coarseLevelFor(lod);
                 vec3 next = origin + direction * t + normal * (uConeLift * coneDiameter(t, tanHalfAngle));
                 skip = t < tSkip && coarseLevel >= emptyLevel && readsStayInside(next, coarseLevel, emptyLo, size);
                 ++samplesSaved;
@@ -423,7 +423,7 @@ vec4 traceCone(vec3 origin, vec3 normal, vec3 direction, float tanHalfAngle) {
         ++samplesTaken;
         // value = (L·τ, τ): τ is the optical depth per voxel length, so the step of
         // uConeStep × diameter voxels has opacity 1 − exp(−τ·step); its radiance is L = rgb/τ.
-        float step = stepLength(t, tanHalfAngle, direction, normal);
+        float step = stepLength(diameter, lod);
         float alpha = opacityOver(value.a, step);
         vec3 radiance = value.a > 1e-6 ? value.rgb * (alpha / value.a) : vec3(0.0);
         accumulated.rgb += (1.0 - accumulated.a) * radiance;

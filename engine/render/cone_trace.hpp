@@ -25,8 +25,8 @@ constexpr int kMaxNarrowCones = 64;
 // a sunlit strip), biases that no setting removed and that differ from view to view; narrow
 // cones converge to the path tracer as the voxels shrink, and four of them, with the traced
 // pixels' blocks and the edge-aware filter averaging their noise, already come closer than the
-// set on most views, for about 2.6× the set's cone tracing on llvmpipe (docs/benchmark.md,
-// "Four narrow cones by default").
+// set on most views, for a few times the set's cone tracing (docs/benchmark.md, "Four narrow
+// cones by default").
 constexpr int kDefaultNarrowCones = 4;
 // Step length / cone diameter of each kind of cone when `--cone-step` is 0 (its default). Narrow
 // cones come as close to the path tracer with a step of a whole diameter as with half, in half

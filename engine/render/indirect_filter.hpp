@@ -13,9 +13,8 @@
 namespace vct {
 
 // The filter's width along a surface (σ of its Gaussian, voxels); 0: off. Eight voxels: the four
-// narrow cones of a traced pixel leave noise on the scale of the traced blocks, which a σ of four
-// left on Cornell's walls (indirect RMSE 0.0215 against 0.0141 with eight, the views' means and
-// cells unchanged within 0.02; docs/benchmark.md, "The edge-aware filter").
+// narrow cones of a traced pixel leave noise on the scale of the traced blocks, which four voxels
+// left on flat walls (docs/benchmark.md, "The edge-aware filter").
 constexpr float kDefaultGiFilterVoxels = 8.0f;
 // Throws naming the option when `voxels` is outside 0..64.
 void validateGiFilter(float voxels);
