@@ -36,8 +36,12 @@ void storeExitShares(uint cell, vec4 xy, vec2 z) {
 // across the cell (0..1 per axis), kept beside its exit shares in 6 bits per axis (a float holding
 // an integer, exact on every GPU; 0: not known). A cell holds its surface without where it lies
 // in it; a narrow cone inside the cell uses the place to tell whether the lit surface lies ahead
-// of it or behind it (cone_march.glsl, sampleVoxels).
-const float LIT_PLACE_STEPS = 63.0;
+// of it or behind it (cone_march.glsl, sampleVoxels). 48 steps, so that the places of evenly lit
+// halves, quarters, thirds and eighths of a cell are steps themselves, not ties between two that
+// the rounding of the photons' positions (which the scene's scale changes) would break: with 63,
+// a cell lit evenly across an axis, mean place ½, rounded to 31 or 32 at random, and a cone
+// between the two saw its own voxel's light or not.
+const float LIT_PLACE_STEPS = 48.0;
 void storeLitPlace(uint cell, bool known, vec3 place) {
     uvec3 q = uvec3(round(clamp(place, 0.0, 1.0) * LIT_PLACE_STEPS));
     cellExitShares[2u * cell + 1u].z = known ? float(1u + q.x + 64u * q.y + 4096u * q.z) : 0.0;

@@ -68,37 +68,59 @@ void main() {
     // A point on (or within rounding of) a voxel face belongs to the voxels on both sides: a
     // surface lying exactly on a voxel boundary has its area split between them by the
     // voxelization, so its flux is split the same way, in proportion to their surface areas.
-    // The neighbour is also the fallback when rounding moved the point out of the voxel the
-    // conservative voxelization marked.
+    // On an edge or a corner (a spot light straight above a grid-aligned floor puts photons on
+    // voxel edges) it is split among all four or eight: which of them floor() picks is decided by
+    // rounding, which the scene's scale and place change.
     vec3 f = voxel - floor(voxel);
-    vec3 toFace = min(f, 1.0 - f);
-    int axis = toFace.x < toFace.y ? (toFace.x < toFace.z ? 0 : 2) : (toFace.y < toFace.z ? 1 : 2);
-    uint other = NONE;
-    if (toFace[axis] < 1e-3 || node == NONE) {
+    bvec3 onFace = lessThan(min(f, 1.0 - f), vec3(1e-3));
+    ivec3 side = ivec3(f.x < 0.5 ? -1 : 1, f.y < 0.5 ? -1 : 1, f.z < 0.5 ? -1 : 1);
+    uint sharers[8];
+    vec3 places[8];  // the photon's place across each sharer (on the face it shares with `cell`)
+    float areas[8];
+    int count = 0;
+    float totalArea = 0.0;
+    for (int corner = 0; corner < 8; ++corner) {
         ivec3 neighbour = ivec3(cell);
-        neighbour[axis] += f[axis] < 0.5 ? -1 : 1;
-        if (all(greaterThanEqual(neighbour, ivec3(0))) && all(lessThan(neighbour, ivec3(n))))
-            other = findNode(uvec3(neighbour), uLevels);
+        vec3 place = f;
+        bool valid = true;
+        for (int a = 0; a < 3; ++a) {
+            if ((corner & (1 << a)) == 0) continue;
+            valid = valid && onFace[a];
+            neighbour[a] += side[a];
+            place[a] = side[a] < 0 ? 1.0 : 0.0;
+        }
+        if (!valid || any(lessThan(neighbour, ivec3(0))) || any(greaterThanEqual(neighbour, ivec3(n)))) continue;
+        uint sharer = corner == 0 ? node : findNode(uvec3(neighbour), uLevels);
+        if (sharer == NONE) continue;
+        sharers[count] = sharer;
+        places[count] = place;
+        areas[count] = cellArea[sharer - uLevelStart[uLevels]];
+        totalArea += areas[count];
+        ++count;
     }
-    if (node == NONE && other == NONE) {
+    // Rounding may also have moved the point out of the voxel the conservative voxelization
+    // marked: the neighbour across the nearest face takes it.
+    if (count == 0) {
+        vec3 toFace = min(f, 1.0 - f);
+        int axis = toFace.x < toFace.y ? (toFace.x < toFace.z ? 0 : 2) : (toFace.y < toFace.z ? 1 : 2);
+        ivec3 neighbour = ivec3(cell);
+        neighbour[axis] += side[axis];
+        if (all(greaterThanEqual(neighbour, ivec3(0))) && all(lessThan(neighbour, ivec3(n)))) {
+            sharers[0] = findNode(uvec3(neighbour), uLevels);
+            places[0] = f;
+            places[0][axis] = side[axis] < 0 ? 1.0 : 0.0;
+            count = sharers[0] == NONE ? 0 : 1;
+        }
+    }
+    if (count == 0) {
         atomicAdd(listCounts[MISSED_COUNT], 1u);
         return;
-    }
-    float share = 1.0;  // of the flux for `node`
-    // The photon's place across its cell; in `other`, on the face shared with this one.
-    vec3 nodePlace = f, otherPlace = f;
-    otherPlace[axis] = f[axis] < 0.5 ? 1.0 : 0.0;
-    if (node == NONE) {
-        node = other;
-        other = NONE;
-        nodePlace = otherPlace;
-    } else if (other != NONE) {
-        float a = cellArea[node - uLevelStart[uLevels]], b = cellArea[other - uLevelStart[uLevels]];
-        share = a + b > 0.0 ? a / (a + b) : 0.5;
     }
     // Clamped so that even an albedo far above 1 (a broken material) cannot wrap a word.
     vec3 units = min(flux * uUnitsPerRelativeFlux, vec3(2147483648.0));
     vec3 litNormal = normalize(texelFetch(uLightNormal, texel, 0).xyz);
-    addPhoton(node, units * share, litNormal, nodePlace);
-    if (other != NONE && share < 1.0) addPhoton(other, units * (1.0 - share), litNormal, otherPlace);
+    for (int k = 0; k < count; ++k) {
+        float share = totalArea > 0.0 ? areas[k] / totalArea : 1.0 / float(count);
+        addPhoton(sharers[k], units * share, litNormal, places[k]);
+    }
 }
