@@ -450,13 +450,25 @@ vec2 hashToUnitSquare(vec3 p) {
     return vec2(float(h & 0xffffu), float(h >> 16)) / 65536.0;
 }
 
-// The shift of a traced pixel's narrow-cone directions: from the pixel, or, for the later samples
-// of an accumulated frame, from its block of traced pixels `stratum`, which keeps it from sample
-// to sample while the traced pixel of the block changes. Not from the cone's apex: its bits change
-// with the scene's scale and place (the same view of a scene moved far away would get other
-// directions, other noise), the pixel's do not.
-vec2 narrowConeShift(ivec2 pixel, ivec2 stratum) {
-    return uRaySequence >= 0 ? hashToUnitSquare(vec3(vec2(stratum), -1.0)) : hashToUnitSquare(vec3(vec2(pixel), -2.0));
+// The shift of a traced pixel's narrow-cone directions (narrowConePoint), from its block of traced
+// pixels `block`. The upsampling and the edge-aware filter average the cones of neighbouring
+// blocks, so the first sample stratifies their shifts: within a tile of 8×8 blocks the shift is
+// the rank-2 lattice x·α + y·α² (α: the R2 sequence's step), so that the blocks of any window, a
+// row, a column, a square, take shifts spread evenly over the square; its first coordinate spans
+// one of the N cones' strata of sin²θ (1/N), whose gaps it fills (over the whole square, α's 0.755
+// is nearly 3/4: with 4 cones a row of blocks would repeat their elevations). Together they cover
+// the directions far more evenly than independent shifts, which leaves less noise after the
+// filter. A hash of the tile moves them all, so tiles do not repeat one pattern. The later
+// samples of an accumulated frame continue one sequence per block instead (narrowConePoint),
+// shifted by a hash of the block. From the block, not from the cone's apex: its bits change with
+// the scene's scale and place (the same view of a scene moved far away would get other
+// directions, other noise), the block's do not.
+vec2 narrowConeShift(ivec2 block) {
+    if (uRaySequence >= 0) return hashToUnitSquare(vec3(vec2(block), -1.0));
+    const vec2 inTile = vec2(block & 7);
+    vec2 lattice = fract(inTile.x * R2_STEP + inTile.y * fract(R2_STEP * R2_STEP));
+    lattice.x /= float(uRayCount);
+    return fract(lattice + hashToUnitSquare(vec3(vec2(block >> 3), -2.0)));
 }
 
 // Narrow cones instead of the cone set (`--cone-rays`, and the later samples of an accumulated

@@ -43,7 +43,7 @@ void storeTraced(ivec2 at, vec4 traced) {
 vec4 tracePixel(ivec2 pixel, vec3 position, vec3 normal) {
     const vec3 origin = (position - uVoxelOrigin) * uVoxelScale + normal * uConeOffset;
     const vec4 gathered = gatherIrradiance(origin, normal, texelFetch(uGeometricNormal, pixel, 0).xyz,
-                                           narrowConeShift(pixel, pixel / uDownscale));
+                                           narrowConeShift(pixel / uDownscale));
     count64(CONE_COUNTER_SAMPLES, samplesTaken);
     count64(CONE_COUNTER_SAMPLES_SAVED, samplesSaved);
     if (!continuesTrace()) count64(CONE_COUNTER_TRACED_PIXELS, 1u);

@@ -261,8 +261,9 @@ TEST(GiAccuracy, NarrowConesSeeAFloorAtTheTopOfItsNode) {
 TEST(GiAccuracy, EveryNarrowConeOfAPixelKeepsItsLight) {
     // 8 and 32 narrow cones estimate the same irradiance. (Traced in one invocation, the cones past
     // the first fifteen or so lost their light on llvmpipe: cone_trace.hpp, kNarrowConesPerDispatch.)
+    // At 128×96, where the ratio stays within ±0.025 over the directions' seeds (at 64×48: ±0.06).
     const auto dir = test::testDir();
-    const std::string view = "--scene cornell --width 64 --height 48 --aov indirect";
+    const std::string view = "--scene cornell --width 128 --height 96 --aov indirect";
     const metrics::RegionRatios few = metrics::regionRatios(render(dir, "few", view + " --cone-rays 8"),
                                                             render(dir, "many", view + " --cone-rays 32"), 1, 1);
     const double ratio = few.meanB / few.meanA;
@@ -596,6 +597,8 @@ TEST(GiAccuracy, IndirectLightMatchesThePathTracerOnSponza) {
     const test::CommandResult found = test::runVct("info --scene sponza");
     if (found.exitCode != 0) GTEST_SKIP() << "Sponza is not in the asset search path: " << found.output;
     const auto dir = test::testDir();
-    const IndirectPair parts = indirectParts(dir, "--scene sponza --camera CameraMain --width 96 --height 54", 256);
-    expectIndirectWithin(parts, "Sponza CameraMain 96x54", kSponzaMean[0], kSponzaMean[1], kSponzaCells[0], kSponzaCells[1]);
+    // 128×72: at 96×54 a cell holds about 600 narrow cones, and its ratio moved by ±0.15 with the
+    // seed of their directions (the largest cell 1.19..1.62 over four seeds); here 1.17..1.29.
+    const IndirectPair parts = indirectParts(dir, "--scene sponza --camera CameraMain --width 128 --height 72", 256);
+    expectIndirectWithin(parts, "Sponza CameraMain 128x72", kSponzaMean[0], kSponzaMean[1], kSponzaCells[0], kSponzaCells[1]);
 }

@@ -28,7 +28,7 @@ struct ConeCase {
 };
 
 struct Checked {
-    double maxIrradiance = 0, bound = 0;
+    double maxIrradiance = 0, meanIrradiance = 0, bound = 0;  // mean: of the pixels' RGB mean, sky left out
     std::size_t sky = 0, pixels = 0;
 };
 
@@ -69,12 +69,14 @@ Checked checkCones(Renderer& renderer, RenderSettings settings, const ConeCase& 
             }
             EXPECT_GE(visibility, 0.0f) << c.name;
             EXPECT_LE(visibility, 1.0f + 1e-6f) << c.name;
+            if (!sky) out.meanIrradiance += (double(e[0]) + e[1] + e[2]) / 3.0;
             if (sky) {
                 ++out.sky;
                 EXPECT_EQ(e[0] + e[1] + e[2], 0.0f) << c.name << ": sky pixel with GI";
                 EXPECT_EQ(visibility, 1.0f) << c.name << ": sky pixel occluded";
             }
         }
+    if (out.pixels > out.sky) out.meanIrradiance /= double(out.pixels - out.sky);
     std::printf("[ cones    ] %-34s max E %.4f ≤ π·L_max %.4f (%.1f %%), %zu of %zu pixels sky\n", c.name.c_str(),
                 out.maxIrradiance, out.bound, 100.0 * out.maxIrradiance / out.bound, out.sky, out.pixels);
     return out;
@@ -146,8 +148,11 @@ TEST(StressCones, LongConesAcrossALargeSparseVolume) {
             const double r2 = glm::dot(d, d), cosFloor = d.y / std::sqrt(r2), cosEmitter = cosFloor;
             expected += emitted * cosFloor * cosEmitter / r2 * ((far - 40.0) / n) * ((far - 40.0) / n);
         }
-    std::printf("[ cones    ] far emitter at the floor: E %.4f, exact %.4f (%.2f×)\n", a.maxIrradiance, expected,
-                a.maxIrradiance / expected);
-    EXPECT_GT(a.maxIrradiance, 0.25 * expected) << "the floor's cones must reach the far emitter";
-    EXPECT_LT(a.maxIrradiance, 4.0 * expected);
+    // The mean over the floor's pixels: one pixel's few narrow cones each carry π/N of the
+    // hemisphere, so a pixel one of whose cones lies on the emitter legitimately reads several
+    // times the exact value (its largest pixel: 2.4–4.4× over the directions' seeds).
+    std::printf("[ cones    ] far emitter at the floor: mean E %.4f (largest pixel %.4f), exact %.4f (%.2f×)\n",
+                a.meanIrradiance, a.maxIrradiance, expected, a.meanIrradiance / expected);
+    EXPECT_GT(a.meanIrradiance, 0.5 * expected) << "the floor's cones must reach the far emitter";
+    EXPECT_LT(a.meanIrradiance, 2.0 * expected);
 }
