@@ -79,7 +79,8 @@ void main() {
     float areas[8];
     int count = 0;
     float totalArea = 0.0;
-    for (int corner = 0; corner < 8; ++corner) {
+    const int corners = any(onFace) ? 8 : 1;  // most photons lie inside their voxel
+    for (int corner = 0; corner < corners; ++corner) {
         ivec3 neighbour = ivec3(cell);
         vec3 place = f;
         bool valid = true;
