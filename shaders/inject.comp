@@ -72,15 +72,26 @@ void main() {
     // voxel edges) it is split among all four or eight: which of them floor() picks is decided by
     // rounding, which the scene's scale and place change.
     vec3 f = voxel - floor(voxel);
-    bvec3 onFace = lessThan(min(f, 1.0 - f), vec3(1e-3));
+    vec3 toFace = min(f, 1.0 - f);
+    bvec3 onFace = lessThan(toFace, vec3(1e-3));
+    // Rounding may also have moved the point out of the voxel the conservative voxelization
+    // marked: the neighbour across the nearest face takes it.
+    if (node == NONE && !any(onFace))
+        onFace[toFace.x < toFace.y ? (toFace.x < toFace.z ? 0 : 2) : (toFace.y < toFace.z ? 1 : 2)] = true;
+    // Clamped so that even an albedo far above 1 (a broken material) cannot wrap a word.
+    vec3 units = min(flux * uUnitsPerRelativeFlux, vec3(2147483648.0));
+    vec3 litNormal = normalize(texelFetch(uLightNormal, texel, 0).xyz);
+    if (!any(onFace)) {  // most photons: inside their voxel
+        addPhoton(node, units, litNormal, f);
+        return;
+    }
     ivec3 side = ivec3(f.x < 0.5 ? -1 : 1, f.y < 0.5 ? -1 : 1, f.z < 0.5 ? -1 : 1);
     uint sharers[8];
     vec3 places[8];  // the photon's place across each sharer (on the face it shares with `cell`)
     float areas[8];
     int count = 0;
     float totalArea = 0.0;
-    const int corners = any(onFace) ? 8 : 1;  // most photons lie inside their voxel
-    for (int corner = 0; corner < corners; ++corner) {
+    for (int corner = 0; corner < 8; ++corner) {
         ivec3 neighbour = ivec3(cell);
         vec3 place = f;
         bool valid = true;
@@ -99,27 +110,10 @@ void main() {
         totalArea += areas[count];
         ++count;
     }
-    // Rounding may also have moved the point out of the voxel the conservative voxelization
-    // marked: the neighbour across the nearest face takes it.
-    if (count == 0) {
-        vec3 toFace = min(f, 1.0 - f);
-        int axis = toFace.x < toFace.y ? (toFace.x < toFace.z ? 0 : 2) : (toFace.y < toFace.z ? 1 : 2);
-        ivec3 neighbour = ivec3(cell);
-        neighbour[axis] += side[axis];
-        if (all(greaterThanEqual(neighbour, ivec3(0))) && all(lessThan(neighbour, ivec3(n)))) {
-            sharers[0] = findNode(uvec3(neighbour), uLevels);
-            places[0] = f;
-            places[0][axis] = side[axis] < 0 ? 1.0 : 0.0;
-            count = sharers[0] == NONE ? 0 : 1;
-        }
-    }
     if (count == 0) {
         atomicAdd(listCounts[MISSED_COUNT], 1u);
         return;
     }
-    // Clamped so that even an albedo far above 1 (a broken material) cannot wrap a word.
-    vec3 units = min(flux * uUnitsPerRelativeFlux, vec3(2147483648.0));
-    vec3 litNormal = normalize(texelFetch(uLightNormal, texel, 0).xyz);
     for (int k = 0; k < count; ++k) {
         float share = totalArea > 0.0 ? areas[k] / totalArea : 1.0 / float(count);
         addPhoton(sharers[k], units * share, litNormal, places[k]);
