@@ -55,6 +55,19 @@ hashes=$(for run in 1 2 3; do
         --out "$out/determinism.png" --hdr-out "$out/determinism.pfm" >/dev/null 2>&1 && md5sum <"$out/determinism.pfm"
 done | sort -u | wc -l)
 step "determinism: three renders of Sponza's indirect light, $hashes distinct hash(es)"
+# Issue 13's costs on this GPU: further bounces after a light move, and jittered samples after a
+# camera move, at 256³ (second frames; the timings JSONs come back as they are).
+costs=""
+for bounces in 1 2 4; do
+    timeout 30 build/vct render -q --scene sponza --voxel-levels 8 --width 1920 --height 1080 --frames 2 \
+        --light-path orbit --bounces "$bounces" --out "$out/costs.png" --timings "$out/bounces_$bounces.json" >/dev/null 2>&1
+    costs="$costs bounces $bounces: $(sed -n 's/^  "total_gpu_ms": \([0-9.]*\).*/\1/p' "$out/bounces_$bounces.json" 2>/dev/null) ms;"
+done
+timeout 30 build/vct render -q --scene sponza --voxel-levels 8 --width 1920 --height 1080 --frames 2 \
+    --camera-path orbit --samples 4 --out "$out/costs.png" --timings "$out/samples_4.json" >/dev/null 2>&1
+costs="$costs 4 samples, camera moved: $(sed -n 's/^  "total_gpu_ms": \([0-9.]*\).*/\1/p' "$out/samples_4.json" 2>/dev/null) ms"
+rm -f "$out/costs.png"
+step "costs at 256³, light moved with N bounces / camera moved with 4 samples (GPU ms):$costs"
 start=$SECONDS
 (cd build && timeout 150 ctest -j"$(nproc)" --output-on-failure --timeout 100) >"$out/ctest.log" 2>&1
 step "ctest: exit $? in $((SECONDS - start)) s: $(grep -E 'tests passed|tests failed' "$out/ctest.log")"
