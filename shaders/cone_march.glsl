@@ -39,6 +39,10 @@ uniform float uRayTanHalfAngle;
 // The narrow cones [uRayFirst, uRayEnd) of the uRayCount: a dispatch traces a few of them
 // (cone_trace.cpp, kNarrowConesPerDispatch), each adding its part to what the ones before stored.
 uniform int uRayFirst, uRayEnd;
+// Invocations that share one apex's cones (cone_trace_common.glsl, CONE_LANES): this one, lane
+// coneLane of coneLanes, traces every coneLanes-th cone from its own. One lane (bounce_gather.comp)
+// traces them all.
+int coneLane = 0, coneLanes = 1;
 // The later samples of an accumulated frame (cone_trace.cpp, conesForSample): >= 0, where this
 // sample's narrow cones start in a sequence of directions that each block of traced pixels
 // continues over the samples; -1: every apex draws its own directions.
@@ -483,8 +487,11 @@ vec4 gatherNarrowCones(vec3 origin, vec3 normal, vec3 surfaceNormal, vec2 shift)
     vec3 tangent, bitangent;
     orthonormalBasis(normal, tangent, bitangent);
     const float count = float(uRayCount);
-    vec4 gathered = vec4(0.0);
-    for (int k = uRayFirst; k < uRayEnd; ++k) {
+    // precise: each cone's product is rounded before it is added, as when the work group adds
+    // the cones of its lanes (cone_trace_common.glsl); a GPU's compiler would otherwise fuse the
+    // two here, not there, and one lane and four would differ in their last bits.
+    precise vec4 gathered = vec4(0.0);
+    for (int k = uRayFirst + coneLane; k < uRayEnd; k += coneLanes) {
         const vec2 point = narrowConePoint(k, count, shift, uRaySequence);
         float sin2 = point.x;
         float azimuth = 2.0 * PI * point.y;
@@ -514,8 +521,8 @@ vec4 gatherIrradiance(vec3 origin, vec3 normal, vec3 surfaceNormal, vec2 narrowS
     if (uRayCount > 0) return gatherNarrowCones(origin, normal, surfaceNormal, narrowShift);
     vec3 tangent, bitangent;
     orthonormalBasis(normal, tangent, bitangent);
-    vec4 gathered = vec4(0.0);
-    for (int c = 0; c < uConeCount; ++c) {
+    precise vec4 gathered = vec4(0.0);  // as in gatherNarrowCones
+    for (int c = coneLane; c < uConeCount; c += coneLanes) {
         if (uOnlyCone >= 0 && c != uOnlyCone) continue;
         vec3 d = uConeDirection[c];
         vec3 direction = normalize(d.x * tangent + d.y * bitangent + d.z * normal);

@@ -1,5 +1,5 @@
 #version 450
-layout(local_size_x = 8, local_size_y = 8) in;
+layout(local_size_x = 8, local_size_y = 8, local_size_z = CONE_LANES) in;
 // cone_trace (DESIGN §4 pass 12, §5.5): diffuse cones over the hemisphere around the normal march
 // through the radiance bricks (cone_march.glsl) and add up to the indirect irradiance E.
 // Output: E (rgb) and ambient visibility (a: 1 = nothing in the way).
@@ -9,6 +9,7 @@ layout(local_size_x = 8, local_size_y = 8) in;
 // (or NO_TRACED_PIXEL when the whole block is sky); cone_upsample.comp then gives every pixel its
 // irradiance from the traced pixels that share its surface. Which pixel of a block is traced turns
 // with uRotation (the pixel sample), so that accumulated samples trace every pixel in turn.
+// The work group's z holds the lanes that share each pixel's cones (cone_trace_common.glsl).
 #include "cone_march.glsl"
 #include "cone_trace_common.glsl"
 
@@ -32,13 +33,13 @@ ivec2 blockPixel(int k) {
 
 void main() {
     const ivec2 cell = ivec2(gl_GlobalInvocationID.xy);
-    if (any(greaterThanEqual(cell, imageSize(uIndirect)))) return;
+    const bool inImage = all(lessThan(cell, imageSize(uIndirect)));
     const ivec2 imageSize = textureSize(uPosition, 0);
     // The pixel this invocation traces: itself, or the first pixel of its block, in the turning
     // order, that sees a surface.
     ivec2 pixel = cell;
-    vec4 position = texelFetch(uPosition, pixel, 0);
-    if (uDownscale > 1) {
+    vec4 position = inImage ? texelFetch(uPosition, pixel, 0) : vec4(0.0);
+    if (inImage && uDownscale > 1) {
         position.w = 0.0;
         for (int k = 0; k < uDownscale * uDownscale && position.w <= 0.0; ++k) {
             const ivec2 candidate = cell * uDownscale + blockPixel(k);
@@ -47,7 +48,11 @@ void main() {
             position = texelFetch(uPosition, pixel, 0);
         }
     }
-    if (position.w <= 0.0) {  // sky: no GI work
+    const bool traces = position.w > 0.0;  // else sky (or outside the image): no GI work
+    const vec4 part = traces ? gatherPixel(pixel, position.xyz, normalize(texelFetch(uNormal, pixel, 0).xyz)) : vec4(0.0);
+    const vec4 gathered = sumConeLanes(part);
+    if (!inImage || !storesConeLanes()) return;
+    if (!traces) {
         imageStore(uIndirect, cell, vec4(0.0, 0.0, 0.0, 1.0));
         if (uDownscale > 1)
             imageStore(uTracedPixel, cell, uvec4(NO_TRACED_PIXEL));
@@ -55,6 +60,6 @@ void main() {
             count64(CONE_COUNTER_SKY_PIXELS, 1u);
         return;
     }
-    storeTraced(cell, tracePixel(pixel, position.xyz, normalize(texelFetch(uNormal, pixel, 0).xyz)));
+    storeTraced(cell, finishTrace(gathered));
     if (uDownscale > 1) imageStore(uTracedPixel, cell, uvec4(packTracedPixel(pixel)));
 }

@@ -1,6 +1,6 @@
 #version 450
 #ifdef TRACE_LISTED
-layout(local_size_x = 64) in;
+layout(local_size_x = 64, local_size_z = CONE_LANES) in;
 #else
 layout(local_size_x = 8, local_size_y = 8) in;
 #endif
@@ -32,10 +32,13 @@ layout(std430, binding = SSBO_OWN_TRACE_PIXELS) buffer OwnTracePixels { uint own
 #ifdef TRACE_LISTED
 void main() {
     const uint listed = linearInvocation();
-    if (listed >= coneCounters[CONE_COUNTER_OWN_TRACES]) return;
-    const ivec2 pixel = unpackTracedPixel(ownTracePixels[listed]);
-    const vec3 position = texelFetch(uPosition, pixel, 0).xyz;
-    storeTraced(pixel, tracePixel(pixel, position, normalize(texelFetch(uNormal, pixel, 0).xyz)));
+    const bool traces = listed < coneCounters[CONE_COUNTER_OWN_TRACES];
+    const ivec2 pixel = traces ? unpackTracedPixel(ownTracePixels[listed]) : ivec2(0);
+    const vec4 part = traces ? gatherPixel(pixel, texelFetch(uPosition, pixel, 0).xyz,
+                                           normalize(texelFetch(uNormal, pixel, 0).xyz))
+                             : vec4(0.0);
+    const vec4 gathered = sumConeLanes(part);
+    if (traces && storesConeLanes()) storeTraced(pixel, finishTrace(gathered));
 }
 #else
 

@@ -57,3 +57,17 @@ TEST(DriverChecks, EveryNodeGroupSizeGivesTheSameBits) {
     EXPECT_EQ(renderBytes(dir, "size64", "VCT_NODE_GROUP_SIZE=64"), chosen);
     EXPECT_EQ(renderBytes(dir, "size1", "VCT_NODE_GROUP_SIZE=1"), chosen);
 }
+
+TEST(DriverChecks, EveryConeLaneCountGivesTheSameBits) {
+    // A traced pixel's narrow cones are traced by one invocation on llvmpipe and by one invocation
+    // per cone on a GPU (cone_trace.cpp, coneLanes), whose parts the work group adds: the GPU's
+    // choice must give this machine's image, bit for bit, for the frame's four cones, for six (two
+    // dispatches, the second with idle lanes) and for the one cone of each later sample.
+    const auto dir = vct::test::testDir();
+    for (const std::string cones : {"", "--cone-rays 6 ", "--samples 3 "}) {
+        const std::string frames = cones + "--frames 2 --light-path orbit";
+        const std::string one = renderBytes(dir, "lanes1", "VCT_CONE_LANES=1", frames);
+        ASSERT_GT(one.size(), 48u * 36u * 12u);
+        EXPECT_TRUE(renderBytes(dir, "lanes4", "VCT_CONE_LANES=4", frames) == one) << "cones: " << cones;
+    }
+}

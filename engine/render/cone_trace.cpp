@@ -3,9 +3,11 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <string>
 
 #include "core/error.hpp"
 #include "gl/compute.hpp"
+#include "gl/driver_checks.hpp"
 #include "voxel/brick_pool.hpp"
 
 namespace vct {
@@ -20,8 +22,21 @@ ConeTrace::ConeTrace(int width, int height)
     : width_(width),
       height_(height),
       indirect_(gl::createTexture2D(GL_RGBA32F, width, height, 1, "indirect irradiance")),
-      program_(gl::buildProgram({{GL_COMPUTE_SHADER, "cone_trace.comp"}})),
       counters_(gl::createBuffer(4 * (kOwnTraceCountSlot + 1), nullptr, GL_DYNAMIC_STORAGE_BIT, "cone counters")) {}
+
+int coneLanes(const ConeSettings& settings) {
+    if (settings.rays == 0) return 1;
+    int lanes = gl::cpuRasterizer() ? 1 : kNarrowConesPerDispatch;
+    if (const char* forced = std::getenv("VCT_CONE_LANES"); forced && *forced) {
+        char* end = nullptr;
+        const long value = std::strtol(forced, &end, 10);
+        if (*end != '\0' || (value != 1 && value != kNarrowConesPerDispatch))
+            fail("VCT_CONE_LANES must be 1 (one invocation traces a pixel's narrow cones) or ", kNarrowConesPerDispatch,
+                 " (one per narrow cone of a dispatch), not '", forced, "'; unset it to let vct choose");
+        lanes = int(value);
+    }
+    return std::min(lanes, settings.rays);
+}
 
 ConeStatistics ConeTrace::statistics() const {
     std::uint32_t c[8] = {};
@@ -178,9 +193,15 @@ void ConeTrace::render(const GBuffer& gbuffer, const Octree& octree, const Radia
         tracedPixel_ = gl::createTexture2D(GL_R32UI, tracedWidth, tracedHeight, 1, "traced pixel of each block");
         tracedBlock_ = block;
     }
+    const int lanes = coneLanes(settings);
+    const std::string lanesDefine = "CONE_LANES " + std::to_string(lanes);
+    if (!tracePrograms_[lanes].id())
+        tracePrograms_[lanes] = gl::buildProgram({{GL_COMPUTE_SHADER, "cone_trace.comp"}}, {lanesDefine});
+    if (inBlocks && !traceListedPrograms_[lanes].id())
+        traceListedPrograms_[lanes] =
+            gl::buildProgram({{GL_COMPUTE_SHADER, "cone_upsample.comp"}}, {"TRACE_LISTED 1", lanesDefine});
     if (inBlocks && !upsampleProgram_.id()) {
         upsampleProgram_ = gl::buildProgram({{GL_COMPUTE_SHADER, "cone_upsample.comp"}});
-        traceListedProgram_ = gl::buildProgram({{GL_COMPUTE_SHADER, "cone_upsample.comp"}}, {"TRACE_LISTED 1"});
         ownTracePixels_ = gl::createBuffer(GLsizeiptr(4) * width_ * height_, nullptr, 0, "pixels that trace their own cones");
         dispatchArgs_ = gl::createBuffer(12, nullptr, 0, "own traces' dispatch arguments");
     }
@@ -208,7 +229,7 @@ void ConeTrace::render(const GBuffer& gbuffer, const Octree& octree, const Radia
                 .uniform("uRayEnd", std::min((batch + 1) * kNarrowConesPerDispatch, settings.rays));
     };
     for (int batch = 0; batch < rayBatches; ++batch) {
-        gl::ComputeCall call = tracingCall(program_);
+        gl::ComputeCall call = tracingCall(tracePrograms_[lanes]);
         selectBatch(call, batch);
         call.image(gl::IMAGE_INDIRECT, inBlocks ? traced_.id() : indirect_.id(), GL_READ_WRITE, GL_RGBA32F)
             .image(gl::IMAGE_TRACED_PIXEL, inBlocks ? tracedPixel_.id() : 0, GL_WRITE_ONLY, GL_R32UI)
@@ -237,7 +258,7 @@ void ConeTrace::render(const GBuffer& gbuffer, const Octree& octree, const Radia
         upsampleCall(upsampleProgram_)
             .dispatchImage(width_, height_, GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
         for (int batch = 0; batch < rayBatches; ++batch) {
-            gl::ComputeCall call = upsampleCall(traceListedProgram_);
+            gl::ComputeCall call = upsampleCall(traceListedPrograms_[lanes]);
             selectBatch(call, batch);
             listDispatch_.dispatch(call, counters_, kOwnTraceCountSlot, dispatchArgs_, 0,
                                    GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);

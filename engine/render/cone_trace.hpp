@@ -1,6 +1,7 @@
 #pragma once
 // cone_trace pass (DESIGN §4 pass 12): indirect irradiance and ambient visibility per pixel by
 // diffuse cones through the radiance bricks.
+#include <array>
 #include <memory>
 #include <string>
 
@@ -121,6 +122,16 @@ void validateConeSettings(const ConeSettings& settings);
 void setConeMarchUniforms(gl::ComputeCall& call, const Octree& octree, const RadianceVolume& radiance,
                           const ConeSettings& settings);
 
+// How many invocations share one traced pixel's cones, each tracing every n-th
+// (cone_trace_common.glsl, CONE_LANES): on a GPU one per narrow cone of a dispatch, so that a
+// frame's few traced pixels keep enough invocations in flight; on a CPU rasterizer one, whose
+// invocations already outnumber its cores. The cone set keeps one lane, whose parts would add up
+// in another order than the cones'. VCT_CONE_LANES (1 or kNarrowConesPerDispatch) sets it for
+// narrow cones, so that the GPU's choice is checked on any machine: both give the same bits, as
+// each lane then traces at most one cone of a dispatch (with two lanes for four cones, each
+// lane's two would add up before the lanes do, in another order).
+int coneLanes(const ConeSettings& settings);
+
 struct ConeStatistics {
     std::uint64_t samples = 0;       // brick samples taken
     std::uint64_t samplesSaved = 0;  // samples empty-space skipping made unnecessary
@@ -146,7 +157,9 @@ private:
     gl::Texture indirect_;
     gl::Texture traced_, tracedPixel_;  // half or quarter resolution only, made on first use
     int tracedBlock_ = 0;               // the block size they were made for
-    gl::Program program_, upsampleProgram_, traceListedProgram_;
+    // The tracing programs for each count of lanes (coneLanes), made on first use; the upsampling.
+    std::array<gl::Program, kNarrowConesPerDispatch + 1> tracePrograms_, traceListedPrograms_;
+    gl::Program upsampleProgram_;
     gl::Buffer counters_;
     gl::Buffer ownTracePixels_, dispatchArgs_;  // cone_upsample's list of pixels that trace their own
     ListDispatch listDispatch_;
