@@ -4,9 +4,10 @@
 # change the engine makes per device (VCT_CONE_LANES, VCT_NODE_GROUP_SIZE, ...) is measured on
 # one warm GPU in one run, the settings taking turns.
 #
-#   bash benchmarks/gpu_device_compare.sh [--rounds N] [--here] SETTING SETTING...
+#   bash benchmarks/gpu_device_compare.sh [--rounds N] [--here] [--options "ARGS"] SETTING SETTING...
 #   SETTING: space-separated NAME=VALUE pairs for `env`, or '-' for none (vct's own choice)
 #   --here: a dry run on this machine's build/ (no unpacking), at 320x180 and 64³/128³
+#   --options: more `vct render` options for every frame (e.g. "--bounces 2")
 #
 # After twenty untimed full frames (the clock's ramp, docs/benchmark.md "On a GPU"), each round
 # renders, for every setting in turn, the second frame of Sponza 1920x1080 after the camera moved
@@ -17,11 +18,12 @@
 set -uo pipefail
 cd "$(dirname "$0")/.."
 root=$PWD
-rounds=3 here=0
+rounds=3 here=0 options=""
 while [ $# -gt 0 ]; do
     case "$1" in
         --rounds) rounds=$2; shift 2 ;;
         --here) here=1; shift ;;
+        --options) options=$2; shift 2 ;;
         *) break ;;
     esac
 done
@@ -62,7 +64,7 @@ for round in $(seq "$rounds"); do
             for index in "${!settings[@]}"; do
                 name="s${index}_${scenario}_L${level}_r${round}"
                 # shellcheck disable=SC2086
-                render "${settings[$index]}" --voxel-levels "$level" --frames 2 ${scenario_options[$scenario]} \
+                render "${settings[$index]}" --voxel-levels "$level" --frames 2 ${scenario_options[$scenario]} $options \
                     --out "$out/$name.png" --hdr-out "$out/$name.pfm" --timings "$out/$name.json" >"$out/$name.log" 2>&1 ||
                     step "FAILED: ${settings[$index]} $scenario 2^$level: $(tail -1 "$out/$name.log")"
                 # Only the image's digest is kept: the images would not travel back.
@@ -75,11 +77,12 @@ for round in $(seq "$rounds"); do
 done
 
 # Medians per setting, and whether each setting's image matches the first's.
-python3 - "$out" "$rounds" "$width" "$height" "${levels[*]}" "${settings[@]}" >"$out/compare.md" <<'EOF'
+python3 - "$out" "$rounds" "$width" "$height" "${levels[*]}" "$options" "${settings[@]}" >"$out/compare.md" <<'EOF'
 import json, statistics, sys
 out, rounds, width, height = sys.argv[1], int(sys.argv[2]), sys.argv[3], sys.argv[4]
-levels, settings = [int(l) for l in sys.argv[5].split()], sys.argv[6:]
-print("# The same Sponza frames under each setting (%sx%s, second frames, GPU ms, median of %d)" % (width, height, rounds))
+levels, options, settings = [int(l) for l in sys.argv[5].split()], sys.argv[6], sys.argv[7:]
+print("# The same Sponza frames under each setting (%sx%s%s, second frames, GPU ms, median of %d)"
+      % (width, height, ", " + options if options else "", rounds))
 print()
 for i, s in enumerate(settings):
     print("- s%d: `%s`" % (i, s if s != "-" else "(vct's own choice)"))

@@ -1,5 +1,11 @@
 #version 450
+#if defined(GATHER_FIRST_CHILDREN) || defined(GATHER_LISTED)
+#define GATHERS 1
+// The work group's z holds the lanes that share each voxel's cones (cone_lanes.glsl).
+layout(local_size_x = 64, local_size_z = CONE_LANES) in;
+#else
 layout(local_size_x = 64) in;
+#endif
 // bounce_gather (multiple bounces, docs/frame.md "Further bounces"): per occupied voxel, the
 // indirect irradiance arriving at its surface, gathered with the cone set (cone_march.glsl)
 // through the radiance bricks as they are, over both sides of the voxel's mean normal (a voxel's
@@ -11,6 +17,7 @@ layout(local_size_x = 64) in;
 // Sixteen storage blocks at most (GL's least per compute shader): the gather needs no border lists.
 #define RADIANCE_WITHOUT_BORDER_LISTS
 #include "cone_march.glsl"
+#include "cone_lanes.glsl"
 #include "radiance_common.glsl"
 
 layout(std430, binding = SSBO_CELL_VALUES) buffer CellAlbedo { uint cellAlbedo[]; };   // RGBA8 albedo, opacity
@@ -113,9 +120,10 @@ void main() {
 #ifdef GATHER_FIRST_CHILDREN
     // One invocation per leaf node, so that every invocation gathers: an invocation per cell that
     // returned for all but first children would cost as much on a SIMD machine as gathering for all.
+    // An invocation past the end still joins its lanes' sums (their barriers), on cell 0.
     uint leaf = gl_GlobalInvocationID.x;
-    if (leaf >= uLevelCount[uLevels - 1]) return;
-    uint node = nodeChild[uLevelStart[uLevels - 1] + leaf];
+    const bool valid = leaf < uLevelCount[uLevels - 1];
+    uint node = valid ? nodeChild[uLevelStart[uLevels - 1] + leaf] : uLevelStart[uLevels];
     uint cell = node - uLevelStart[uLevels];
 #elif defined(SHARE_WITH_SIBLINGS)
     uint cell = gl_GlobalInvocationID.x;
@@ -130,8 +138,8 @@ void main() {
     uint node = uLevelStart[uLevels] + cell;
 #else  // GATHER_LISTED
     uint listed = linearInvocation();
-    if (listed >= listCounts[BOUNCE_LIST_COUNT_SLOT]) return;
-    uint cell = ownGatherCells[listed];
+    const bool valid = listed < listCounts[BOUNCE_LIST_COUNT_SLOT];
+    uint cell = valid ? ownGatherCells[listed] : 0u;
     uint node = uLevelStart[uLevels] + cell;
 #endif
     vec4 albedo = unpackUnorm4x8(cellAlbedo[cell]);
@@ -155,14 +163,17 @@ void main() {
     // that takes its irradiance does not face a solid that way: a surface that spans two voxel
     // layers has its inner layer facing the outer one, whose cells share the inner cell's gather.
     // The cones then start beyond the outer layer, where the outer cells' own would start.
+    enterConeLane();
     for (int side = 0; side < 2; ++side) {
         vec3 n = side == 0 ? normal : -normal;
-        bool gather = !solid[side] || siblingTakesSide(nodeParent[node], cell, normal, n);
+        bool gather = valid && (!solid[side] || siblingTakesSide(nodeParent[node], cell, normal, n));
         // The cone set (voxelGatherCones): no narrow cones to shift.
-        irradiance[side] = gather ? gatherIrradiance(centre + n * uConeOffset, n, n, vec2(0.0)).rgb : vec3(0.0);
+        vec4 part = gather ? gatherIrradiance(centre + n * uConeOffset, n, n, vec2(0.0)) : vec4(0.0);
+        irradiance[side] = sumConeLanes(part).rgb;
     }
+    if (!valid || !storesConeLanes()) return;
 #endif
-#if defined(GATHER_FIRST_CHILDREN) || defined(GATHER_LISTED)
+#ifdef GATHERS
     bounceBase[3u * cellCount + 2u * cell] = vec4(irradiance[0], 0.0);
     bounceBase[3u * cellCount + 2u * cell + 1u] = vec4(irradiance[1], 0.0);
 #endif

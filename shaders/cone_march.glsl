@@ -39,9 +39,8 @@ uniform float uRayTanHalfAngle;
 // The narrow cones [uRayFirst, uRayEnd) of the uRayCount: a dispatch traces a few of them
 // (cone_trace.cpp, kNarrowConesPerDispatch), each adding its part to what the ones before stored.
 uniform int uRayFirst, uRayEnd;
-// Invocations that share one apex's cones (cone_trace_common.glsl, CONE_LANES): this one, lane
-// coneLane of coneLanes, traces every coneLanes-th cone from its own. One lane (bounce_gather.comp)
-// traces them all.
+// Invocations that share one apex's cones (cone_lanes.glsl): this one, lane coneLane of
+// coneLanes, traces every coneLanes-th cone from its own. One lane traces them all.
 int coneLane = 0, coneLanes = 1;
 // The later samples of an accumulated frame (cone_trace.cpp, conesForSample): >= 0, where this
 // sample's narrow cones start in a sequence of directions that each block of traced pixels
@@ -488,8 +487,8 @@ vec4 gatherNarrowCones(vec3 origin, vec3 normal, vec3 surfaceNormal, vec2 shift)
     orthonormalBasis(normal, tangent, bitangent);
     const float count = float(uRayCount);
     // precise: each cone's product is rounded before it is added, as when the work group adds
-    // the cones of its lanes (cone_trace_common.glsl); a GPU's compiler would otherwise fuse the
-    // two here, not there, and one lane and four would differ in their last bits.
+    // the cones of its lanes (cone_lanes.glsl); a GPU's compiler would otherwise fuse the two
+    // here, not there, and one lane and four would differ in their last bits.
     precise vec4 gathered = vec4(0.0);
     for (int k = uRayFirst + coneLane; k < uRayEnd; k += coneLanes) {
         const vec2 point = narrowConePoint(k, count, shift, uRaySequence);

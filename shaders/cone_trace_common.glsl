@@ -1,5 +1,6 @@
 // Shared by cone_trace.comp and cone_upsample.comp. Requires cone_march.glsl.
 #include "traced_pixel.glsl"
+#include "cone_lanes.glsl"
 
 // What the cone passes did and saved, as 64-bit counts (low word, high word): samples taken,
 // samples that empty-space skipping saved (the steps the skipped nodes would have cost), pixels
@@ -33,28 +34,13 @@ void storeTraced(ivec2 at, vec4 traced) {
     imageStore(uIndirect, at, continuesTrace() ? imageLoad(uIndirect, at) + traced : traced);
 }
 
-// The invocations that trace one pixel's cones side by side (the work group's z, CONE_LANES of
-// them, cone_trace.cpp): each traces every CONE_LANES-th cone (cone_march.glsl, coneLane), and
-// the group adds their parts in shared memory. A GPU hides the latency of a cone's dependent
-// lookups only with many invocations in flight, and a frame's few traced pixels (one per block)
-// are too few for that; a pixel's cones in one invocation also make its runtime the sum of their
-// lengths. With one lane per cone of the dispatch (or one lane for all), the parts are added in
-// the cones' order, the order one invocation adds them in: the same bits either way.
-#ifndef CONE_LANES
-#define CONE_LANES 1
-#endif
-#if CONE_LANES > 1
-shared vec4 coneLaneParts[gl_WorkGroupSize.x * gl_WorkGroupSize.y * CONE_LANES];
-#endif
-
 // The surface point of `pixel` (scene-local position, unit normal facing the camera): what this
 // invocation's cones gather there (gatherIrradiance: E in rgb, Σ weight·opacity in a), its samples
 // counted. No light arrives from behind the pixel's triangle (gatherIrradiance), however far
 // smooth shading leans the normal from it. The pixel's block of traced pixels continues one
 // sequence of narrow-cone directions over the samples (narrowConeShift).
 vec4 gatherPixel(ivec2 pixel, vec3 position, vec3 normal) {
-    coneLane = int(gl_LocalInvocationID.z);
-    coneLanes = CONE_LANES;
+    enterConeLane();
     const vec3 origin = (position - uVoxelOrigin) * uVoxelScale + normal * uConeOffset;
     const vec4 gathered = gatherIrradiance(origin, normal, texelFetch(uGeometricNormal, pixel, 0).xyz,
                                            narrowConeShift(pixel / uDownscale));
@@ -62,25 +48,6 @@ vec4 gatherPixel(ivec2 pixel, vec3 position, vec3 normal) {
     count64(CONE_COUNTER_SAMPLES_SAVED, samplesSaved);
     return gathered;
 }
-
-// The sum of the lanes' parts of this invocation's pixel. Every invocation of the group calls it
-// (it holds a barrier), whether it traced or not (a part of zero).
-vec4 sumConeLanes(vec4 part) {
-#if CONE_LANES > 1
-    const uint pixelsPerLane = gl_WorkGroupSize.x * gl_WorkGroupSize.y;
-    const uint pixelSlot = gl_LocalInvocationIndex % pixelsPerLane;
-    coneLaneParts[gl_LocalInvocationIndex] = part;
-    barrier();
-    precise vec4 sum = vec4(0.0);  // unfused, as in gatherNarrowCones
-    for (uint lane = 0u; lane < uint(CONE_LANES); ++lane) sum += coneLaneParts[pixelSlot + lane * pixelsPerLane];
-    return sum;
-#else
-    return part;
-#endif
-}
-
-// Whether this invocation stores its pixel's result: the first lane.
-bool storesConeLanes() { return gl_LocalInvocationID.z == 0u; }
 
 // A pixel's gathered cones (sumConeLanes) as indirect irradiance E (rgb) and ambient visibility
 // (a: 1 = nothing in the way), counted as one traced pixel. A dispatch that continues the trace

@@ -1,16 +1,25 @@
 #include "lighting/bounce_gather.hpp"
 
 #include <algorithm>
+#include <string>
 
 #include "gl/driver_checks.hpp"
 
 namespace vct {
 
 BounceGather::BounceGather()
-    : gatherFirstChildren_(gl::buildProgram({{GL_COMPUTE_SHADER, "bounce_gather.comp"}}, {"GATHER_FIRST_CHILDREN 1"})),
-      shareWithSiblings_(gl::buildProgram({{GL_COMPUTE_SHADER, "bounce_gather.comp"}}, {"SHARE_WITH_SIBLINGS 1"})),
-      gatherListed_(gl::buildProgram({{GL_COMPUTE_SHADER, "bounce_gather.comp"}}, {"GATHER_LISTED 1"})),
+    : shareWithSiblings_(gl::buildProgram({{GL_COMPUTE_SHADER, "bounce_gather.comp"}}, {"SHARE_WITH_SIBLINGS 1"})),
       shareWithSecond_(gl::buildProgram({{GL_COMPUTE_SHADER, "bounce_gather.comp"}}, {"SHARE_WITH_SECOND 1"})) {}
+
+const BounceGather::Gathers& BounceGather::gathers(int lanes) {
+    Gathers& g = gathers_[lanes];
+    if (!g.firstChildren.id()) {
+        const std::string lanesDefine = "CONE_LANES " + std::to_string(lanes);
+        g.firstChildren = gl::buildProgram({{GL_COMPUTE_SHADER, "bounce_gather.comp"}}, {"GATHER_FIRST_CHILDREN 1", lanesDefine});
+        g.listed = gl::buildProgram({{GL_COMPUTE_SHADER, "bounce_gather.comp"}}, {"GATHER_LISTED 1", lanesDefine});
+    }
+    return g;
+}
 
 void BounceGather::run(const Octree& octree, RadianceVolume& volume, RadianceFilter& filter, int bounces,
                        const ConeSettings& cones) {
@@ -28,6 +37,7 @@ void BounceGather::run(const Octree& octree, RadianceVolume& volume, RadianceFil
     glCopyNamedBufferSubData(volume.cellExitShares.id(), base_.id(), 0, GLintptr(vec4s), GLsizeiptr(2 * vec4s));
     constexpr GLbitfield kBarrier = GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT;
     const ConeSettings bounceCones = voxelGatherCones(cones);
+    const Gathers& gather = gathers(coneLanes(bounceCones));
     for (int bounce = 2; bounce <= bounces; ++bounce) {
         clearListCounts(volume, gl::BOUNCE_LIST_COUNT_SLOT, gl::SECOND_SHARE_COUNT_SLOT + 1);
         // First children (one per leaf node), then their siblings (one per cell), which read what
@@ -43,9 +53,9 @@ void BounceGather::run(const Octree& octree, RadianceVolume& volume, RadianceFil
                 .storage(gl::SSBO_BOUNCE_LIST, ownGatherCells_);
             return call;
         };
-        prepare(gatherFirstChildren_).dispatch1D(std::uint32_t(octree.leafCount()), 64, kBarrier);
+        prepare(gather.firstChildren).dispatch1D(std::uint32_t(octree.leafCount()), 64, kBarrier);
         prepare(shareWithSiblings_).dispatch1D(std::uint32_t(cells), 64, kBarrier);
-        listDispatch_.dispatch(prepare(gatherListed_), volume, gl::BOUNCE_LIST_COUNT_SLOT, kBarrier);
+        listDispatch_.dispatch(prepare(gather.listed), volume, gl::BOUNCE_LIST_COUNT_SLOT, kBarrier);
         listDispatch_.dispatch(prepare(shareWithSecond_), volume, gl::SECOND_SHARE_COUNT_SLOT, kBarrier);
         filter.leaves(octree, volume);
         filter.mip(octree, volume);

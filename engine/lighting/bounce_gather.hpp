@@ -9,6 +9,8 @@
 // that read voxels (RadianceVolume::bouncedCellRadiance). Cells whose parent's first child has nearly their
 // normal take that child's gathered irradiance; of the others, those that agree with the parent's
 // second gatherer take its irradiance, and the rest gather their own.
+#include <array>
+
 #include "gl/objects.hpp"
 #include "lighting/list_dispatch.hpp"
 #include "lighting/radiance_filter.hpp"
@@ -30,7 +32,13 @@ public:
     std::uint32_t ownGathers(const RadianceVolume& volume) const;
 
 private:
-    gl::Program gatherFirstChildren_, shareWithSiblings_, gatherListed_, shareWithSecond_;
+    // The two passes that gather, for each count of cone lanes (coneLanes), made on first use.
+    struct Gathers {
+        gl::Program firstChildren, listed;
+    };
+    const Gathers& gathers(int lanes);
+    std::array<Gathers, kMaxConeLanes + 1> gathers_;
+    gl::Program shareWithSiblings_, shareWithSecond_;
     ListDispatch listDispatch_;
     // The first bounce, (L·τ, τ) then (N·τ, τ) of every cell, then the irradiance on both sides
     // of every cell (written for first children).

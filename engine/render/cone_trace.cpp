@@ -25,17 +25,16 @@ ConeTrace::ConeTrace(int width, int height)
       counters_(gl::createBuffer(4 * (kOwnTraceCountSlot + 1), nullptr, GL_DYNAMIC_STORAGE_BIT, "cone counters")) {}
 
 int coneLanes(const ConeSettings& settings) {
-    if (settings.rays == 0) return 1;
-    int lanes = gl::cpuRasterizer() ? 1 : kNarrowConesPerDispatch;
+    const int cones = settings.rays > 0 ? std::min(settings.rays, kNarrowConesPerDispatch) : int(makeConeSet(settings.cones).size());
+    bool perCone = !gl::cpuRasterizer();
     if (const char* forced = std::getenv("VCT_CONE_LANES"); forced && *forced) {
-        char* end = nullptr;
-        const long value = std::strtol(forced, &end, 10);
-        if (*end != '\0' || (value != 1 && value != kNarrowConesPerDispatch))
-            fail("VCT_CONE_LANES must be 1 (one invocation traces a pixel's narrow cones) or ", kNarrowConesPerDispatch,
-                 " (one per narrow cone of a dispatch), not '", forced, "'; unset it to let vct choose");
-        lanes = int(value);
+        const std::string value = forced;
+        if (value != "1" && value != "cones")
+            fail("VCT_CONE_LANES must be 1 (one invocation traces all the cones of an apex) or cones (one invocation per "
+                 "cone), not '", value, "'; unset it to let vct choose");
+        perCone = value == "cones";
     }
-    return std::min(lanes, settings.rays);
+    return perCone && cones <= kMaxConeLanes ? cones : 1;
 }
 
 ConeStatistics ConeTrace::statistics() const {

@@ -122,14 +122,15 @@ void validateConeSettings(const ConeSettings& settings);
 void setConeMarchUniforms(gl::ComputeCall& call, const Octree& octree, const RadianceVolume& radiance,
                           const ConeSettings& settings);
 
-// How many invocations share one traced pixel's cones, each tracing every n-th
-// (cone_trace_common.glsl, CONE_LANES): on a GPU one per narrow cone of a dispatch, so that a
-// frame's few traced pixels keep enough invocations in flight; on a CPU rasterizer one, whose
-// invocations already outnumber its cores. The cone set keeps one lane, whose parts would add up
-// in another order than the cones'. VCT_CONE_LANES (1 or kNarrowConesPerDispatch) sets it for
-// narrow cones, so that the GPU's choice is checked on any machine: both give the same bits, as
-// each lane then traces at most one cone of a dispatch (with two lanes for four cones, each
-// lane's two would add up before the lanes do, in another order).
+// How many invocations share one apex's cones, each tracing every n-th (shaders/cone_lanes.glsl,
+// CONE_LANES): on a GPU one per cone (the narrow cones of a dispatch, or the cone set's cones), so
+// that the few apexes that trace (a frame's one pixel per block, a bounce's gathering voxels) keep
+// enough invocations in flight; on a CPU rasterizer one, whose invocations already outnumber its
+// cores. Sets of more than kMaxConeLanes cones keep one lane. VCT_CONE_LANES forces one lane ("1")
+// or one per cone ("cones"), so that the GPU's choice is checked on any machine: both give the same
+// bits, as each lane then traces at most one cone of a dispatch (with two lanes for four cones,
+// each lane's two would add up before the lanes do, in another order).
+constexpr int kMaxConeLanes = 9;
 int coneLanes(const ConeSettings& settings);
 
 struct ConeStatistics {
@@ -158,7 +159,7 @@ private:
     gl::Texture traced_, tracedPixel_;  // half or quarter resolution only, made on first use
     int tracedBlock_ = 0;               // the block size they were made for
     // The tracing programs for each count of lanes (coneLanes), made on first use; the upsampling.
-    std::array<gl::Program, kNarrowConesPerDispatch + 1> tracePrograms_, traceListedPrograms_;
+    std::array<gl::Program, kMaxConeLanes + 1> tracePrograms_, traceListedPrograms_;
     gl::Program upsampleProgram_;
     gl::Buffer counters_;
     gl::Buffer ownTracePixels_, dispatchArgs_;  // cone_upsample's list of pixels that trace their own
