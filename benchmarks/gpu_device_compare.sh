@@ -9,9 +9,9 @@
 #   --here: a dry run on this machine's build/ (no unpacking), at 320x180 and 64³/128³
 #   --options: more `vct render` options for every frame (e.g. "--bounces 2")
 #
-# After twenty untimed full frames (the clock's ramp, docs/benchmark.md "On a GPU"), each round
-# renders, for every setting in turn, the second frame of Sponza 1920x1080 after the camera moved
-# and after the light moved, at 256³ and 512³. Writes $OUT/gpu_compare/ (default /tmp/vct_gpu):
+# After twenty untimed full frames (the clock's ramp, docs/benchmark.md "On a GPU") and one untimed
+# frame per setting, each round renders, for every setting in turn, the second frame of Sponza
+# 1920x1080 after the camera moved and after the light moved, at 256³ and 512³. Writes $OUT/gpu_compare/ (default /tmp/vct_gpu):
 # compare.md, the median GPU milliseconds of each pass that differs and of the frame per setting,
 # with whether the settings' images are bit-identical (md5 of the HDR output); every timings JSON;
 # steps.log. Archived as $OUT/gpu_compare.tar after every step.
@@ -58,6 +58,13 @@ render - --voxel-levels "${levels[0]}" --frames 20 --full-frames --out "$out/war
 step "warmed up (SM clock $before -> $(clock))"
 
 declare -A scenario_options=([camera_moved]="--camera-path orbit" [light_moved]="--light-path orbit")
+# On the H200 the first frames after the warm-up were slow in every pass, twice (a G-buffer of
+# 49–82 ms against 14.9): each setting first renders once untimed.
+for setting in "${settings[@]}"; do
+    # shellcheck disable=SC2086
+    render "$setting" --voxel-levels "${levels[0]}" --frames 2 --camera-path orbit $options --out "$out/untimed.png" >/dev/null 2>&1
+done
+rm -f "$out/untimed.png"
 for round in $(seq "$rounds"); do
     for level in "${levels[@]}"; do
         for scenario in camera_moved light_moved; do
