@@ -72,3 +72,20 @@ TEST(DriverChecks, EveryConeLaneCountGivesTheSameBits) {
         EXPECT_TRUE(renderBytes(dir, "lanes", "VCT_CONE_LANES=cones", frames) == one) << "cones: " << cones;
     }
 }
+
+TEST(DriverChecks, DeviceChoicesRefuseValuesTheyDoNotKnow) {
+    // The variables that force a device's choice name themselves and what they take, and stop
+    // the render, rather than falling back to a default that hides the mistake.
+    struct Case {
+        std::string environment, message;
+    };
+    for (const Case& c : {Case{"VCT_CONE_LANES=2", "VCT_CONE_LANES must be 1"},
+                          Case{"VCT_NODE_GROUP_SIZE=0", "VCT_NODE_GROUP_SIZE must be a whole number"}}) {
+        const vct::test::CommandResult r = vct::test::runVct(
+            "render -q --scene cornell --width 16 --height 12 --voxel-levels 5 --out " +
+                (vct::test::testDir() / "refused.png").string(),
+            c.environment);
+        EXPECT_NE(r.exitCode, 0) << c.environment;
+        EXPECT_NE(r.output.find(c.message), std::string::npos) << c.environment << ": " << r.output;
+    }
+}
