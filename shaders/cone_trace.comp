@@ -9,7 +9,7 @@ layout(local_size_x = 8, local_size_y = 8, local_size_z = CONE_LANES) in;
 // (or NO_TRACED_PIXEL when the whole block is sky); cone_upsample.comp then gives every pixel its
 // irradiance from the traced pixels that share its surface. Which pixel of a block is traced turns
 // with uRotation (the pixel sample), so that accumulated samples trace every pixel in turn.
-// The work group's z holds the lanes that share each pixel's cones (cone_trace_common.glsl).
+// The work group's z holds the lanes that share each pixel's cones (cone_lanes.glsl).
 #include "cone_march.glsl"
 #include "cone_trace_common.glsl"
 

@@ -1,13 +1,16 @@
 // Where a pixel's narrow cones point (cone_march.glsl, gatherNarrowCones): cone k as a point
 // (sin²θ, azimuth / 2π) of the unit square, both uniform for cosine-weighted directions.
 
+// The R2 sequence's step (1/g, 1/g², g the plastic number, g³ = g + 1) in 32-bit fixed point,
+// and as floats.
+const uvec2 R2_STEP_FIXED = uvec2(3242174889u, 2447445414u);
+const vec2 R2_STEP = vec2(R2_STEP_FIXED) / 4294967296.0;
+
 // Point j of the R2 sequence (Roberts' additive recurrence by the plastic number) in [0, 1)²,
-// in 32-bit fixed point, so exact at any index: every prefix of it covers the square evenly.
+// in fixed point, so exact at any index: every prefix of it covers the square evenly.
 vec2 r2Point(uint j) {
-    return vec2(uvec2(2147483648u) + j * uvec2(3242174889u, 2447445414u)) / 4294967296.0;
+    return vec2(uvec2(2147483648u) + j * R2_STEP_FIXED) / 4294967296.0;
 }
-// The R2 sequence's step (1/g, 1/g², g the plastic number), as the fixed-point one above.
-const vec2 R2_STEP = vec2(0.7548776662, 0.5698402910);
 
 // Cone k of `count` traced at once: a Fibonacci lattice, k/N against k/φ. With `sequence` >= 0
 // (the later samples of an accumulated frame, which trace a few cones each) point sequence + k of

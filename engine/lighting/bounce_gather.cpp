@@ -1,7 +1,6 @@
 #include "lighting/bounce_gather.hpp"
 
 #include <algorithm>
-#include <string>
 
 #include "gl/driver_checks.hpp"
 
@@ -14,9 +13,9 @@ BounceGather::BounceGather()
 const BounceGather::Gathers& BounceGather::gathers(int lanes) {
     Gathers& g = gathers_[lanes];
     if (!g.firstChildren.id()) {
-        const std::string lanesDefine = "CONE_LANES " + std::to_string(lanes);
-        g.firstChildren = gl::buildProgram({{GL_COMPUTE_SHADER, "bounce_gather.comp"}}, {"GATHER_FIRST_CHILDREN 1", lanesDefine});
-        g.listed = gl::buildProgram({{GL_COMPUTE_SHADER, "bounce_gather.comp"}}, {"GATHER_LISTED 1", lanesDefine});
+        g.firstChildren = gl::buildProgram({{GL_COMPUTE_SHADER, "bounce_gather.comp"}},
+                                           {"GATHER_FIRST_CHILDREN 1", coneLanesDefine(lanes)});
+        g.listed = gl::buildProgram({{GL_COMPUTE_SHADER, "bounce_gather.comp"}}, {"GATHER_LISTED 1", coneLanesDefine(lanes)});
     }
     return g;
 }

@@ -37,6 +37,8 @@ int coneLanes(const ConeSettings& settings) {
     return perCone && cones <= kMaxConeLanes ? cones : 1;
 }
 
+std::string coneLanesDefine(int lanes) { return "CONE_LANES " + std::to_string(lanes); }
+
 ConeStatistics ConeTrace::statistics() const {
     std::uint32_t c[8] = {};
     glGetNamedBufferSubData(counters_.id(), 0, sizeof c, c);
@@ -193,12 +195,11 @@ void ConeTrace::render(const GBuffer& gbuffer, const Octree& octree, const Radia
         tracedBlock_ = block;
     }
     const int lanes = coneLanes(settings);
-    const std::string lanesDefine = "CONE_LANES " + std::to_string(lanes);
     if (!tracePrograms_[lanes].id())
-        tracePrograms_[lanes] = gl::buildProgram({{GL_COMPUTE_SHADER, "cone_trace.comp"}}, {lanesDefine});
+        tracePrograms_[lanes] = gl::buildProgram({{GL_COMPUTE_SHADER, "cone_trace.comp"}}, {coneLanesDefine(lanes)});
     if (inBlocks && !traceListedPrograms_[lanes].id())
         traceListedPrograms_[lanes] =
-            gl::buildProgram({{GL_COMPUTE_SHADER, "cone_upsample.comp"}}, {"TRACE_LISTED 1", lanesDefine});
+            gl::buildProgram({{GL_COMPUTE_SHADER, "cone_upsample.comp"}}, {"TRACE_LISTED 1", coneLanesDefine(lanes)});
     if (inBlocks && !upsampleProgram_.id()) {
         upsampleProgram_ = gl::buildProgram({{GL_COMPUTE_SHADER, "cone_upsample.comp"}});
         ownTracePixels_ = gl::createBuffer(GLsizeiptr(4) * width_ * height_, nullptr, 0, "pixels that trace their own cones");

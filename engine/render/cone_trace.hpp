@@ -132,6 +132,8 @@ void setConeMarchUniforms(gl::ComputeCall& call, const Octree& octree, const Rad
 // each lane's two would add up before the lanes do, in another order).
 constexpr int kMaxConeLanes = 9;
 int coneLanes(const ConeSettings& settings);
+// The shader define that builds a tracing program for `lanes` lanes.
+std::string coneLanesDefine(int lanes);
 
 struct ConeStatistics {
     std::uint64_t samples = 0;       // brick samples taken
