@@ -183,6 +183,9 @@ vec4 sampleLevel(uint node, int level, uint finer, vec3 p, uvec3 cell, uint know
         float share = 1.0;
         uint holder = NONE;
         float weight = along ? coneAlongPlus[a] : coneAlongMinus[a];
+        // A narrow cone travels along one side of each axis only: the other side's share is
+        // exactly 0, and its lookups would add nothing.
+        if (weight == 0.0) continue;
         if (node == NONE) {
             if (!lateral || (readsAcrossEmptyNodes() && weight > NEGLIGIBLE_SHARE))
                 holder = slabAheadOfEmpty(level, p, cell, known, knownLevel, i, readsAcrossEmptyNodes() && !lateral, at, share);
