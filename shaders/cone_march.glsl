@@ -115,27 +115,28 @@ uint slabAhead(uint node, vec3 inBrick, int i, float ahead, out vec3 at) {
     return nodeNeighbour[node * 6u + uint(2 * a + (along ? 1 : 0))];  // −x +x −y +y −z +z
 }
 
-// The same where p's node at `level` is empty: the point ahead may still lie in a node that holds
-// geometry. A cone about to reach a wall reads the wall's slab before it enters the wall's node,
-// as it would from a node of its own. Without that read a cone's view of a wall would depend on
-// where its samples fall relative to the node grid, and the grid would print into the image as
-// blocks of constant light. With `faceRead` (narrow cones, along their axis), where the point
-// ahead is empty too but less than a spacing before the face of a node that is not, the read is
-// that node's face sample by one minus the distance (`share`): what interpolating across the face
-// would give it, had the empty node a brick. A narrow cone reads one level and steps as far as
-// its spacing, so a slab is counted once only if the samples on both sides of its face read it;
-// without this read a sheet in the first slab past an empty node was counted by a quarter to
-// three quarters, by the phase of the steps, and a floor under a sheet saw the emitter above the
-// sheet through it. (Across the axis the same read would add to the light a cone collects from a
-// surface beside its path, which narrow cones over-collect already.)
-uint slabAheadOfEmpty(int level, vec3 p, uvec3 cell, uint known, int knownLevel, int i, bool faceRead, out vec3 at,
-                      out float share) {
+// The same where p's node is empty, `ahead` spacings of level `level` ahead of p: that point may
+// still lie in a node that holds geometry. A cone about to reach a wall reads the wall's slab
+// before it enters the wall's node, as it would from a node of its own. Without that read a
+// cone's view of a wall would depend on where its samples fall relative to the node grid, and the
+// grid would print into the image as blocks of constant light. With `faceRead` (narrow cones),
+// where the point ahead is empty too but less than a spacing before the face of a node that is
+// not, the read is that node's face sample by one minus the distance (`share`): what
+// interpolating across the face would give it, had the empty node a brick. A narrow cone's reads
+// along a direction cover, sample after sample, the stretch it travels that way only if the
+// reads on both sides of a face see what lies past it: without this read a sheet in the first
+// slab past an empty node was counted by a quarter to three quarters, by the phase of the steps,
+// and a floor under a sheet saw the emitter above the sheet through it; across the axis, a floor
+// below a cone that descends over it was counted only where a read happened to fall past its
+// node's face, and the light of a floor seen at a grazing angle was lost.
+uint slabAheadOfEmpty(int level, vec3 p, uvec3 cell, uint known, int knownLevel, int i, bool faceRead, float ahead,
+                      out vec3 at, out float share) {
     int a = i >> 1;
     bool along = (i & 1) == 0;
     const float size = float(1 << (uLevels - level));
     share = 1.0;
     vec3 q = p;
-    q[a] += (along ? 0.5 : -0.5) * size;
+    q[a] += (along ? 0.5 : -0.5) * ahead * size;
     const int face = 2 * a + (along ? 1 : 0);
     uint holder = nodeAhead(q, level, cell, known, knownLevel, face);
     if (holder == NONE && faceRead) {
@@ -161,11 +162,14 @@ uint slabAheadOfEmpty(int level, vec3 p, uvec3 cell, uint known, int knownLevel,
 // A slab read ahead reaches up to two of its level's spacings from p, about the footprint's
 // diameter: along the axis that is where the cone goes next, but sideways it lies outside the
 // cone (a horizontal cone high in a gallery would see the sunlit courtyard floor below it).
-// Directions more than 41° from the axis are therefore read from `finer`, the node one level
-// finer at p, whose slabs stay within the footprint. Where the finer node is empty, its read is
-// taken from `node`'s coarser slabs, starting where the finer read would: half a spacing ahead
-// (reading them a whole spacing ahead reached past the footprint and made the choice between
-// the two levels a jump; where `node` is empty, so is the finer one: nothing).
+// Directions more than 41° from the axis are therefore read one level finer, half that level's
+// spacing ahead of p: the slab then covers, on average, the stretch from p to one finer spacing
+// ahead, about the footprint's radius on that side. They are read from `finer`, the node one level
+// finer at p; where it is empty, from `node`'s coarser slabs starting where the finer read would
+// (a quarter of their spacing ahead); where `node` is empty too, from the finer node ahead, with
+// its face read (slabAheadOfEmpty). Reading a whole coarse spacing ahead from an empty node, as
+// before, reached one to two footprints away: a cone passing over a sunlit floor collected its
+// light while still far above it, and a cone passing beside a column was blocked by it.
 // With bricks, trilinear inside the bricks; without (`--no-bricks`), the nearest sample: the
 // unfiltered data, for comparison.
 vec4 sampleLevel(uint node, int level, uint finer, vec3 p, uvec3 cell, uint known, int knownLevel) {
@@ -187,11 +191,13 @@ vec4 sampleLevel(uint node, int level, uint finer, vec3 p, uvec3 cell, uint know
         // exactly 0, and its lookups would add nothing.
         if (weight == 0.0) continue;
         if (node == NONE) {
-            if (!lateral || (readsAcrossEmptyNodes() && weight > NEGLIGIBLE_SHARE))
-                holder = slabAheadOfEmpty(level, p, cell, known, knownLevel, i, readsAcrossEmptyNodes() && !lateral, at, share);
+            if (!lateral)
+                holder = slabAheadOfEmpty(level, p, cell, known, knownLevel, i, readsAcrossEmptyNodes(), 1.0, at, share);
+            else if (readsAcrossEmptyNodes() && weight > NEGLIGIBLE_SHARE)
+                holder = slabAheadOfEmpty(level + 1, p, cell, known, knownLevel, i, true, 0.5, at, share);
         } else {
             bool fromFiner = lateral && finer != NONE;
-            float ahead = lateral && !fromFiner && level + 1 < uLevels ? 0.5 : 1.0;
+            float ahead = !lateral ? 1.0 : fromFiner || level + 1 == uLevels ? 0.5 : 0.25;
             holder = slabAhead(fromFiner ? finer : node, fromFiner ? inFiner : inNode, i, ahead, at);
         }
         if (holder == NONE) continue;  // empty space ahead
