@@ -127,3 +127,31 @@ TEST(VoxelRadianceView, ShowsALitWallOnlyFromItsLitSide) {
     EXPECT_EQ(darkDirect, 0.0);
     EXPECT_LT(dark, 0.02 * litDirect);
 }
+
+TEST(VoxelRadianceView, ShowsTheFurtherBouncesAtEveryLevel) {
+    // After the bounce pass the bricks hold every bounce, and so must the voxels the view shows
+    // (RadianceVolume::seenCellRadiance); the voxels once showed the first bounce only, beside
+    // coarser levels that showed them all. The Cornell box at 64³: a second bounce lights its
+    // walls by about half as much again, at the voxels as at the level above them.
+    auto context = gl::createContext(gl::defaultBackend());
+    const Scene cornell = makeCornellBox();
+    Renderer renderer(cornell, smallSettings(0));
+    const Camera camera = lookingAt({0.0, 1.0, 3.4}, {0.0, 1.0, 0.0});
+    auto viewMean = [&](int level, int bounces) {
+        RenderSettings s = renderer.settings();
+        s.view = ViewMode::Radiance;
+        s.voxelViewLevel = level;
+        s.bounces = bounces;
+        renderer.setSettings(s);
+        renderer.renderFrame(camera);
+        return centralMean(renderer.readHdr());
+    };
+    const int voxels = renderer.settings().voxelLevels, above = voxels - 1;
+    const double voxelOne = viewMean(voxels, 1), voxelTwo = viewMean(voxels, 2);
+    const double aboveOne = viewMean(above, 1), aboveTwo = viewMean(above, 2);
+    const double voxelGain = voxelTwo / voxelOne, aboveGain = aboveTwo / aboveOne;
+    std::printf("[ voxel view] Cornell, second bounce: the voxels' radiance %.3fx, the level above %.3fx\n", voxelGain,
+                aboveGain);
+    EXPECT_GT(voxelGain, 1.2);
+    EXPECT_NEAR(voxelGain / aboveGain, 1.0, 0.15);
+}

@@ -51,6 +51,10 @@ struct RadianceVolume {
     // the bounce pass. The voxels' own radiance (cellRadiance) always holds the first, and
     // bouncedCellRadiance as many as the bricks when they hold more.
     int bricksBounces = 1;
+    // The voxels' radiance and exit shares with as many bounces as the bricks: what the passes
+    // that read voxels (narrow cones thinner than a voxel, the voxel view) must read.
+    const gl::Buffer& seenCellRadiance() const { return bricksBounces > 1 ? bouncedCellRadiance : cellRadiance; }
+    const gl::Buffer& seenCellExitShares() const { return bricksBounces > 1 ? bouncedCellExitShares : cellExitShares; }
     // The geometry bricks (Octree::geometryBricksBuild) over whose density every node outside the
     // border lists holds no light (shaders/radiance_clear.comp); 0: none yet. While they are the
     // octree's, a new filtering only has to clear the bricks of the last one's border nodes that

@@ -22,8 +22,11 @@ struct MemoryPool {
 
 class Renderer {
 public:
-    // Validates the settings against this context's limits before creating anything.
+    // Validates the settings against this context's limits before creating anything. The renderer
+    // reads `scene` at every frame and keeps no copy: it must outlive the renderer (a temporary
+    // would dangle, hence the deleted overloads).
     Renderer(const Scene& scene, const RenderSettings& settings);
+    Renderer(Scene&&, const RenderSettings&) = delete;
 
     // Changes take effect at the next renderFrame, which re-runs only the passes that depend on
     // what changed (engine/pipeline/pass_graph.hpp).
@@ -33,6 +36,7 @@ public:
     void setMaterial(std::size_t index, const Material& material);
     // A different scene (or the same one, edited): everything is rebuilt.
     void setScene(const Scene& scene);
+    void setScene(Scene&&) = delete;
 
     // `sample` picks where in each pixel this frame looks (render/pixel_samples.hpp; 0 = the
     // centre). The output holds the average of the samples since the last restart: sample k > 0

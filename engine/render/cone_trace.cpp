@@ -150,9 +150,8 @@ void setConeMarchUniforms(gl::ComputeCall& call, const Octree& octree, const Rad
         .uniform("uVoxelScale", float(1.0 / octree.grid.voxelSize))
         .storage(gl::SSBO_CELL_OPACITY, octree.cellOpacity);
     // The voxels narrow cones read hold as many bounces as the bricks.
-    const bool bounced = radiance.bricksBounces > 1;
-    call.storage(gl::SSBO_CELL_RADIANCE, bounced ? radiance.bouncedCellRadiance : radiance.cellRadiance)
-        .storage(gl::SSBO_CELL_EXIT_SHARES, bounced ? radiance.bouncedCellExitShares : radiance.cellExitShares);
+    call.storage(gl::SSBO_CELL_RADIANCE, radiance.seenCellRadiance())
+        .storage(gl::SSBO_CELL_EXIT_SHARES, radiance.seenCellExitShares());
 }
 
 float coneStep(const ConeSettings& settings) {

@@ -25,8 +25,9 @@ void VoxelView::render(const Octree& octree, const RadianceVolume* radiance, con
         .storage(gl::SSBO_CELL_VALUES, octree.cellAlbedo)
         .storage(gl::SSBO_RAW_VALUE, octree.rawValue);
     if (radiance) {
-        call.storage(gl::SSBO_CELL_RADIANCE, radiance->cellRadiance)
-            .storage(gl::SSBO_CELL_EXIT_SHARES, radiance->cellExitShares)
+        // The voxels with as many bounces as the bricks the coarser levels show.
+        call.storage(gl::SSBO_CELL_RADIANCE, radiance->seenCellRadiance())
+            .storage(gl::SSBO_CELL_EXIT_SHARES, radiance->seenCellExitShares())
             .storage(gl::SSBO_CELL_OPACITY, octree.cellOpacity);
         bindDirectionalTexture(call, *radiance);
     }
