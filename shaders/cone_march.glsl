@@ -79,6 +79,15 @@ const float LATERAL_ALIGNMENT = 0.75;
 const float NARROW_LATERAL_ALIGNMENT = 0.5;
 float lateralAlignment() { return uRayCount > 0 ? NARROW_LATERAL_ALIGNMENT : LATERAL_ALIGNMENT; }
 
+// How far ahead of p a read across the axis from an occupied node starts, in spacings of the
+// brick it reads (`finerSpacings`: that of the finer level, else the coarser one's, half as
+// many): narrow cones half a finer spacing, about their footprint's radius, as their reads out of
+// empty nodes (sampleLevel); the cone set, whose rules were tuned with it, a whole one.
+float lateralAhead(bool finerSpacings) {
+    float ahead = uRayCount > 0 ? 0.5 : 1.0;
+    return finerSpacings ? ahead : 0.5 * ahead;
+}
+
 // Where p lies in the brick of node `node` (level `level`), in sample spacings (0..2 per axis).
 vec3 brickPosition(uint node, int level, vec3 p) {
     float size = float(1 << (uLevels - level));
@@ -162,12 +171,12 @@ uint slabAheadOfEmpty(int level, vec3 p, uvec3 cell, uint known, int knownLevel,
 // A slab read ahead reaches up to two of its level's spacings from p, about the footprint's
 // diameter: along the axis that is where the cone goes next, but sideways it lies outside the
 // cone (a horizontal cone high in a gallery would see the sunlit courtyard floor below it).
-// Directions more than 41° from the axis are therefore read one level finer, half that level's
-// spacing ahead of p: the slab then covers, on average, the stretch from p to one finer spacing
-// ahead, about the footprint's radius on that side. They are read from `finer`, the node one level
-// finer at p; where it is empty, from `node`'s coarser slabs starting where the finer read would
-// (a quarter of their spacing ahead); where `node` is empty too, from the finer node ahead, with
-// its face read (slabAheadOfEmpty). Reading a whole coarse spacing ahead from an empty node, as
+// Directions more than 41° from the axis are therefore read one level finer, for narrow cones
+// half that level's spacing ahead of p: the slab then covers, on average, the stretch from p to
+// one finer spacing ahead, about the footprint's radius on that side (lateralAhead). They are
+// read from `finer`, the node one level finer at p; where it is empty, from `node`'s coarser
+// slabs starting where the finer read would; where `node` is empty too (narrow cones), from the
+// finer node ahead, with its face read (slabAheadOfEmpty). Reading a whole coarse spacing ahead from an empty node, as
 // before, reached one to two footprints away: a cone passing over a sunlit floor collected its
 // light while still far above it, and a cone passing beside a column was blocked by it.
 // With bricks, trilinear inside the bricks; without (`--no-bricks`), the nearest sample: the
@@ -197,7 +206,7 @@ vec4 sampleLevel(uint node, int level, uint finer, vec3 p, uvec3 cell, uint know
                 holder = slabAheadOfEmpty(level + 1, p, cell, known, knownLevel, i, true, 0.5, at, share);
         } else {
             bool fromFiner = lateral && finer != NONE;
-            float ahead = !lateral ? 1.0 : fromFiner || level + 1 == uLevels ? 0.5 : 0.25;
+            float ahead = lateral ? lateralAhead(fromFiner || level + 1 == uLevels) : 1.0;
             holder = slabAhead(fromFiner ? finer : node, fromFiner ? inFiner : inNode, i, ahead, at);
         }
         if (holder == NONE) continue;  // empty space ahead
