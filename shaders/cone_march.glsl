@@ -79,10 +79,10 @@ const float LATERAL_ALIGNMENT = 0.75;
 const float NARROW_LATERAL_ALIGNMENT = 0.5;
 float lateralAlignment() { return uRayCount > 0 ? NARROW_LATERAL_ALIGNMENT : LATERAL_ALIGNMENT; }
 
-// How far ahead of p a read across the axis from an occupied node starts, in spacings of the
-// brick it reads (`finerSpacings`: that of the finer level, else the coarser one's, half as
-// many): narrow cones half a finer spacing, about their footprint's radius, as their reads out of
-// empty nodes (sampleLevel); the cone set, whose rules were tuned with it, a whole one.
+// How far ahead of p a read across the axis starts, in spacings of the brick it reads
+// (`finerSpacings`: that of the finer level, else the coarser one's, half as many): narrow cones
+// half a finer spacing, about their footprint's radius, from occupied and empty nodes alike
+// (sampleLevel); the cone set, whose rules were tuned with it, a whole one.
 float lateralAhead(bool finerSpacings) {
     float ahead = uRayCount > 0 ? 0.5 : 1.0;
     return finerSpacings ? ahead : 0.5 * ahead;
@@ -176,9 +176,9 @@ uint slabAheadOfEmpty(int level, vec3 p, uvec3 cell, uint known, int knownLevel,
 // one finer spacing ahead, about the footprint's radius on that side (lateralAhead). They are
 // read from `finer`, the node one level finer at p; where it is empty, from `node`'s coarser
 // slabs starting where the finer read would; where `node` is empty too (narrow cones), from the
-// finer node ahead, with its face read (slabAheadOfEmpty). Reading a whole coarse spacing ahead from an empty node, as
-// before, reached one to two footprints away: a cone passing over a sunlit floor collected its
-// light while still far above it, and a cone passing beside a column was blocked by it.
+// finer node ahead, with its face read (slabAheadOfEmpty). A whole coarse spacing ahead would
+// reach one to two footprints away: a cone passing over a sunlit floor would collect its light
+// while still far above it, and a cone passing beside a column would be blocked by it.
 // With bricks, trilinear inside the bricks; without (`--no-bricks`), the nearest sample: the
 // unfiltered data, for comparison.
 vec4 sampleLevel(uint node, int level, uint finer, vec3 p, uvec3 cell, uint known, int knownLevel) {
@@ -203,7 +203,7 @@ vec4 sampleLevel(uint node, int level, uint finer, vec3 p, uvec3 cell, uint know
             if (!lateral)
                 holder = slabAheadOfEmpty(level, p, cell, known, knownLevel, i, readsAcrossEmptyNodes(), 1.0, at, share);
             else if (readsAcrossEmptyNodes() && weight > NEGLIGIBLE_SHARE)
-                holder = slabAheadOfEmpty(level + 1, p, cell, known, knownLevel, i, true, 0.5, at, share);
+                holder = slabAheadOfEmpty(level + 1, p, cell, known, knownLevel, i, true, lateralAhead(true), at, share);
         } else {
             bool fromFiner = lateral && finer != NONE;
             float ahead = lateral ? lateralAhead(fromFiner || level + 1 == uLevels) : 1.0;
