@@ -492,6 +492,23 @@ vec2 narrowConeShift(ivec2 block) {
     return fract(lattice + hashToUnitSquare(vec3(vec2(block >> 3), -2.0)));
 }
 
+#ifdef STORE_CONE_SAMPLES
+// Each narrow cone's own result (cone_trace.comp, for cone_reuse.comp): for cell coneSampleCell of
+// the traced image, cone k's (premultiplied radiance, opacity) and (axis, 1 if traced, 0 if it
+// lay behind the triangle's plane); -1: the apex is not a traced cell's.
+layout(std430, binding = SSBO_CONE_SAMPLES) writeonly buffer ConeSamples { vec4 coneSamples[]; };
+ivec2 coneSampleCell = ivec2(-1);
+uniform int uConeSampleRowLength;  // cells per row of the traced image
+uniform int uStoreConeSamples;     // 0: cone_reuse does not run, nothing is stored
+
+void storeConeSample(int k, vec3 direction, vec4 cone, bool traced) {
+    if (coneSampleCell.x < 0 || uStoreConeSamples == 0) return;
+    const int at = 2 * ((coneSampleCell.y * uConeSampleRowLength + coneSampleCell.x) * uRayCount + k);
+    coneSamples[at] = cone;
+    coneSamples[at + 1] = vec4(direction, traced ? 1.0 : 0.0);
+}
+#endif
+
 // Narrow cones instead of the cone set (`--cone-rays`, and the later samples of an accumulated
 // frame): uRayCount cones, each of weight π/N, whose axes sample the cosine-weighted hemisphere
 // (sin²θ and azimuth uniform, narrow_cone_directions.glsl) shifted by `shift` (narrowConeShift).
@@ -522,6 +539,9 @@ vec4 gatherNarrowCones(vec3 origin, vec3 normal, vec3 surfaceNormal, vec2 shift)
             coneSpread(direction, uRayTanHalfAngle, coneAlongPlus, coneAlongMinus);
             cone = traceCone(origin, normal, direction, uRayTanHalfAngle);
         }
+#ifdef STORE_CONE_SAMPLES
+        storeConeSample(k, direction, cone, dot(direction, surfaceNormal) > 0.0);
+#endif
         gathered += (PI / count) * cone;
     }
     return gathered;

@@ -49,6 +49,9 @@ void main() {
         }
     }
     const bool traces = position.w > 0.0;  // else sky (or outside the image): no GI work
+#ifdef STORE_CONE_SAMPLES
+    if (inImage) coneSampleCell = cell;
+#endif
     const vec4 part = traces ? gatherPixel(pixel, position.xyz, normalize(texelFetch(uNormal, pixel, 0).xyz)) : vec4(0.0);
     const vec4 gathered = sumConeLanes(part);
     if (!inImage || !storesConeLanes()) return;

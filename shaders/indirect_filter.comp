@@ -34,27 +34,16 @@ const float kTapWeight[2] = float[2](0.5, 0.25);
 // taps along one line, the fit falls back towards their mean instead of extrapolating noise.
 const float kSlopeDamping = 0.1;
 
-// The G-buffer pixel whose point cell `cell` stands for; false where it saw only sky.
-bool pointOf(ivec2 cell, out vec3 position, out vec3 normal) {
-    ivec2 pixel = cell;
-    if (uDownscale > 1) {
-        const uint traced = texelFetch(uTracedPixel, cell, 0).r;
-        if (traced == NO_TRACED_PIXEL) return false;
-        pixel = unpackTracedPixel(traced);
-    }
-    const vec4 p = texelFetch(uPosition, pixel, 0);
-    position = p.xyz;
-    normal = normalize(texelFetch(uNormal, pixel, 0).xyz);
-    return p.w > 0.0;
-}
+#include "traced_cell.glsl"
 
 void main() {
     const ivec2 cell = ivec2(gl_GlobalInvocationID.xy);
     const ivec2 size = imageSize(uFiltered);
     if (any(greaterThanEqual(cell, size))) return;
+    ivec2 pixel;
     vec3 position, normal;
     const vec4 own = texelFetch(uIrradiance, cell, 0);
-    if (!pointOf(cell, position, normal)) {  // sky: nothing to filter
+    if (!pointOf(cell, pixel, position, normal)) {  // sky: nothing to filter
         imageStore(uFiltered, cell, own);
         return;
     }
@@ -67,9 +56,10 @@ void main() {
     for (int dy = -1; dy <= 1; ++dy) {
         for (int dx = -1; dx <= 1; ++dx) {
             const ivec2 tap = cell + ivec2(dx, dy) * uTapSpacing;
+            ivec2 tapPixel;
             vec3 tapPosition, tapNormal;
             if (any(lessThan(tap, ivec2(0))) || any(greaterThanEqual(tap, size)) ||
-                !pointOf(tap, tapPosition, tapNormal))
+                !pointOf(tap, tapPixel, tapPosition, tapNormal))
                 continue;
             const vec3 offset = (tapPosition - position) * uVoxelScale;
             const float w = kTapWeight[abs(dx)] * kTapWeight[abs(dy)] * exp(-dot(offset, offset) * inverseTwoSigma2) *

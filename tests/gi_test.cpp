@@ -365,12 +365,14 @@ TEST(Gi, SameCommandTwiceIsBitIdentical) {
 // `--only-cone K` (the diagnostic partner of `vct reference --cone-region K`): each cone gathers
 // alone what it gathers in the whole set, and with narrow cones (`--cone-rays`) those whose axes
 // lie in cone K's region do, so without the edge-aware filter (which clamps to its taps' range,
-// not linear) the five images add up to the whole set's irradiance.
+// not linear) the five images add up to the whole set's irradiance. Each pixel keeps its own cones
+// (`--cone-reuse 0`): a region is one of the pixel's own hemisphere, which its neighbours' cones do
+// not share.
 TEST(Gi, OnlyConeImagesAddUpToTheWholeSet) {
     const auto dir = test::testDir();
     for (const std::string cones : {"", " --cone-rays 12"}) {
         const std::string common =
-            "--scene cornell --width 48 --height 36 --voxel-levels 6 --gi-filter 0 --aov indirect" + cones;
+            "--scene cornell --width 48 --height 36 --voxel-levels 6 --gi-filter 0 --cone-reuse 0 --aov indirect" + cones;
         const ImageF whole = renderCli(dir, "all", common);
         std::vector<float> sum(whole.rgba.size(), 0.0f);
         int regionsWithLight = 0;

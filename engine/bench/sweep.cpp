@@ -82,7 +82,7 @@ const std::vector<std::string>& parameterNames() {
                                                    "cone_offset",  "cone_lift",      "bricks",        "light_view_res",
                                                    "pcf_radius",   "gi",             "bounces",       "samples",
                                                    "gi_resolution", "shadow_res",    "gi_filter",     "cone_rays",
-                                                   "sample_cones"};
+                                                   "sample_cones", "cone_reuse"};
     return names;
 }
 
@@ -104,6 +104,8 @@ void applyParameter(PointSettings& s, const std::string& name, const Json& v) {
         } catch (const Error&) {
             fail(what, " must be \"narrow\" or \"frame\", not \"", v.get<std::string>(), "\"");
         }
+    } else if (name == "cone_reuse") {
+        s.cones.reuseVoxels = float(number(v, what, 0.0, 64.0));
     } else if (name == "cone_aperture") {
         s.cones.apertureScale = float(number(v, what, 1e-3, 4.0));
     } else if (name == "cone_step") {
@@ -150,6 +152,7 @@ std::string parameterValue(const PointSettings& s, const std::string& name) {
     if (name == "cones") return std::to_string(s.cones.cones);
     if (name == "cone_rays") return std::to_string(s.cones.rays);
     if (name == "sample_cones") return sampleConesName(s.cones.narrowConesAfterFirstSample);
+    if (name == "cone_reuse") return formatNumber(s.cones.reuseVoxels);
     if (name == "cone_aperture") return formatNumber(s.cones.apertureScale);
     if (name == "cone_step") return formatNumber(s.cones.step);
     if (name == "cone_offset") return formatNumber(s.cones.offset);

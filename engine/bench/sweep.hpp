@@ -26,7 +26,8 @@
 // `vct render --samples`; the point's times are those of all its samples together),
 // gi_resolution ("auto", "full", "half" or "quarter", `--gi-resolution`), shadow_res
 // (`--shadow-res`), gi_filter (`--gi-filter`, voxels; 0: off), cone_rays (`--cone-rays`; 0: the
-// cone set).
+// cone set), sample_cones ("narrow" or "frame", `--sample-cones`), cone_reuse (`--cone-reuse`,
+// voxels; 0: off).
 #include <cstdint>
 #include <filesystem>
 #include <optional>

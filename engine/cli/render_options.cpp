@@ -46,6 +46,11 @@ void addRenderSettingsOptions(CLI::App& command, RenderSettingsOptions& o) {
                        "narrow cones per traced pixel (1..64), or 0: the cone set (--cones), about 2.6x faster "
                        "to trace than 4 narrow cones and further from the path tracer")
         ->capture_default_str();
+    command.add_option("--cone-reuse", o.cones.reuseVoxels,
+                       "narrow cones shared between neighbouring traced pixels: sigma in voxels of the weight a "
+                       "neighbour's cones get by its distance (0: every traced pixel keeps its own cones); it lowers "
+                       "their noise where surfaces are too small for the edge-aware filter")
+        ->capture_default_str();
     command.add_option("--sample-cones", o.sampleCones,
                        "what the samples after the first of an accumulated frame (--samples, the viewer) trace: "
                        "narrow (one narrow cone per traced pixel, its direction stratified over the samples: the "

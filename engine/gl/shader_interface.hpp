@@ -45,6 +45,7 @@
     X(SSBO_CELL_OPACITY, 25)                                                                      \
     X(SSBO_BOUNCE_LIST, 26)          /* bounce_gather: cells that gather their own bounce */      \
     X(SSBO_OWN_TRACE_PIXELS, 27)     /* cone_upsample: pixels that trace their own cones */        \
+    X(SSBO_CONE_SAMPLES, 28)         /* cone_trace → cone_reuse: each narrow cone's own result */  \
     /* Image units (glBindImageTexture). */                                                       \
     X(IMAGE_FRAGMENTS, 0)            /* voxel-fragment list, RGBA32UI */                          \
     X(IMAGE_FRAGMENT_NODE, 1)        /* the node of each fragment, R32UI */                       \

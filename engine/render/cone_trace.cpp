@@ -51,7 +51,8 @@ std::size_t ConeTrace::bytes() const {
     const int b = std::max(tracedBlock_, 1);
     const std::size_t blocks = traced_.id() ? std::size_t((width_ + b - 1) / b) * ((height_ + b - 1) / b) : 0;
     const std::size_t ownTraceList = ownTracePixels_.id() ? std::size_t(width_) * height_ * 4 : 0;
-    return full + blocks * (16 + 4) + ownTraceList + (filter_ ? filter_->bytes() : 0);
+    const std::size_t reuse = coneSampleBytes_ + std::size_t(reusedWidth_) * reusedHeight_ * 16;
+    return full + blocks * (16 + 4) + ownTraceList + reuse + (filter_ ? filter_->bytes() : 0);
 }
 
 GiResolution parseGiResolution(const std::string& name) {
@@ -110,6 +111,8 @@ void validateConeSettings(const ConeSettings& s) {
     if (s.onlyCone < -1 || s.onlyCone >= s.cones)
         fail("--only-cone ", s.onlyCone, " is not a cone of the ", s.cones, "-cone set; use 0..", s.cones - 1,
              " (0 is the cone along the normal)");
+    if (!(s.reuseVoxels >= 0.0f && s.reuseVoxels <= 64.0f))
+        fail("--cone-reuse ", s.reuseVoxels, " is out of range; use 0 (each pixel its own cones) .. 64 voxels");
     if (!(s.maxDistance >= 0.0f) || !std::isfinite(s.maxDistance))
         fail("cone maximum distance ", s.maxDistance, " must be a finite number ≥ 0 (0: the whole volume)");
 }
@@ -175,9 +178,14 @@ bool parseSampleCones(const std::string& name) {
 
 const char* sampleConesName(bool narrowConesAfterFirstSample) { return narrowConesAfterFirstSample ? "narrow" : "frame"; }
 
+bool reusesCones(const ConeSettings& settings) {
+    return settings.reuseVoxels > 0.0f && settings.rays > 0 && settings.rays <= kMaxReusedCones && settings.onlyCone < 0;
+}
+
 ConeSettings voxelGatherCones(ConeSettings settings) {
     settings.rays = 0;
     settings.narrowConesAfterFirstSample = ConeSettings{}.narrowConesAfterFirstSample;
+    settings.reuseVoxels = ConeSettings{}.reuseVoxels;
     return settings;
 }
 
@@ -195,7 +203,8 @@ void ConeTrace::render(const GBuffer& gbuffer, const Octree& octree, const Radia
     }
     const int lanes = coneLanes(settings);
     if (!tracePrograms_[lanes].id())
-        tracePrograms_[lanes] = gl::buildProgram({{GL_COMPUTE_SHADER, "cone_trace.comp"}}, {coneLanesDefine(lanes)});
+        tracePrograms_[lanes] =
+            gl::buildProgram({{GL_COMPUTE_SHADER, "cone_trace.comp"}}, {coneLanesDefine(lanes), "STORE_CONE_SAMPLES 1"});
     if (inBlocks && !traceListedPrograms_[lanes].id())
         traceListedPrograms_[lanes] =
             gl::buildProgram({{GL_COMPUTE_SHADER, "cone_upsample.comp"}}, {"TRACE_LISTED 1", coneLanesDefine(lanes)});
@@ -227,9 +236,28 @@ void ConeTrace::render(const GBuffer& gbuffer, const Octree& octree, const Radia
             call.uniform("uRayFirst", batch * kNarrowConesPerDispatch)
                 .uniform("uRayEnd", std::min((batch + 1) * kNarrowConesPerDispatch, settings.rays));
     };
+    const std::size_t coneSampleBytes = std::size_t(tracedWidth) * tracedHeight * std::max(settings.rays, 0) * 32;
+    const bool reuse = reusesCones(settings) && sampleCones.raySequence < 0 && coneSampleBytes <= kMaxConeReuseBytes;
+    if (reuse) {
+        const std::size_t bytes = coneSampleBytes;
+        if (coneSampleBytes_ < bytes) {
+            coneSamples_ = gl::createBuffer(GLsizeiptr(bytes), nullptr, 0, "narrow cones of the traced cells");
+            coneSampleBytes_ = bytes;
+        }
+        if (reusedWidth_ != tracedWidth || reusedHeight_ != tracedHeight) {
+            reused_ = gl::createTexture2D(GL_RGBA32F, tracedWidth, tracedHeight, 1, "indirect irradiance, cones reused");
+            reusedWidth_ = tracedWidth;
+            reusedHeight_ = tracedHeight;
+        }
+        if (!reuseProgram_.id())
+            reuseProgram_ = gl::buildProgram({{GL_COMPUTE_SHADER, "cone_reuse.comp"}},
+                                             {"REUSE_RADIUS " + std::to_string(kConeReuseRadius)});
+    }
     for (int batch = 0; batch < rayBatches; ++batch) {
         gl::ComputeCall call = tracingCall(tracePrograms_[lanes]);
         selectBatch(call, batch);
+        call.uniform("uStoreConeSamples", reuse ? 1 : 0).uniform("uConeSampleRowLength", tracedWidth);
+        if (reuse) call.storage(gl::SSBO_CONE_SAMPLES, coneSamples_);
         call.image(gl::IMAGE_INDIRECT, inBlocks ? traced_.id() : indirect_.id(), GL_READ_WRITE, GL_RGBA32F)
             .image(gl::IMAGE_TRACED_PIXEL, inBlocks ? tracedPixel_.id() : 0, GL_WRITE_ONLY, GL_R32UI)
             .uniform("uRotation", sample & (block * block - 1))
@@ -238,6 +266,23 @@ void ConeTrace::render(const GBuffer& gbuffer, const Octree& octree, const Radia
     // The filter runs on the traced image; a different image size (another GI resolution) makes
     // a new one.
     GLuint traced = inBlocks ? traced_.id() : indirect_.id();
+    if (reuse) {
+        gl::ComputeCall(reuseProgram_)
+            .texture(gl::TEXTURE_GBUFFER_NORMAL, gbuffer.normal())
+            .texture(gl::TEXTURE_GBUFFER_GEOMETRIC_NORMAL, gbuffer.geometricNormal())
+            .texture(gl::TEXTURE_GBUFFER_POSITION, gbuffer.position())
+            .texture(gl::TEXTURE_TRACED_IRRADIANCE, traced)
+            .texture(gl::TEXTURE_TRACED_PIXEL, inBlocks ? tracedPixel_.id() : 0)
+            .storage(gl::SSBO_CONE_SAMPLES, coneSamples_)
+            .image(gl::IMAGE_INDIRECT, reused_.id(), GL_WRITE_ONLY, GL_RGBA32F)
+            .uniform("uDownscale", block)
+            .uniform("uRayCount", settings.rays)
+            .uniform("uVoxelScale", float(1.0 / octree.grid.voxelSize))
+            .uniform("uConeOffset", settings.offset)
+            .uniform("uReuseVoxels", settings.reuseVoxels)
+            .dispatchImage(tracedWidth, tracedHeight, GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+        traced = reused_.id();
+    }
     if (filterVoxels > 0.0f) {
         if (!filter_ || filter_->width() != tracedWidth || filter_->height() != tracedHeight)
             filter_ = std::make_unique<IndirectFilter>(tracedWidth, tracedHeight);

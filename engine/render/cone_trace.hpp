@@ -40,6 +40,26 @@ constexpr float kNarrowConeStep = 1.0f;
 // in one invocation lost the light of those past the first fifteen or so. Four stay well inside.
 constexpr int kNarrowConesPerDispatch = 4;
 
+// A traced pixel's irradiance takes the narrow cones of the traced pixels around it as well as its
+// own (shaders/cone_reuse.comp): those of a window of 5×5 traced cells whose cones start on the same
+// side of both surfaces, weighted by a Gaussian of this σ (voxels) over their distance. Four cones
+// per pixel leave most of their noise where surfaces are small (a column's flutes, mouldings), which
+// the edge-aware filter has to keep apart; directions reused across them cut Sponza's indirect
+// RMSE by about a tenth for about 1 % of the cone tracing (docs/benchmark.md, "Cones shared between
+// neighbours"). Wider σ gained nothing measurable.
+constexpr float kDefaultConeReuseVoxels = 4.0f;
+// The window's radius in traced cells (REUSE_RADIUS in the shader): 3×3 cells gave two thirds of
+// the gain, 7×7 no more than 5×5, at a cost that grows with its fourth power.
+constexpr int kConeReuseRadius = 2;
+// Pixels that trace more cones than this keep their own: their noise is already low, and what the
+// neighbours' cones see differently near their own apexes (a thin surface under another one) weighs
+// more than the noise they remove (measured with 16 cones: CameraMain's indirect RMSE −3 %,
+// CameraAlcove's +7 %; with 8, −6 % and +3 %).
+constexpr int kMaxReusedCones = 8;
+// The reused cones are kept per traced cell (32 bytes each); beyond this much memory the pixels
+// keep their own cones (64 narrow cones at every pixel of a 1080p image would need 4 GiB).
+constexpr std::size_t kMaxConeReuseBytes = std::size_t(512) << 20;
+
 struct ConeSettings {
     int cones = 5;              // 1, 5, 6, 9 or 16 (cone_set.hpp)
     float apertureScale = 1.0f; // multiplies the derived half-angles (tan), for the benchmark sweep
@@ -56,6 +76,9 @@ struct ConeSettings {
     // refinement): one narrow cone each (conesForSample; true, the default) or the frame's cones
     // again (`--sample-cones frame`).
     bool narrowConesAfterFirstSample = true;
+    // Narrow cones shared between neighbouring traced pixels (`--cone-reuse`, shaders/cone_reuse.comp):
+    // σ in voxels of the weight a neighbour's cones get by its distance; 0: each pixel its own.
+    float reuseVoxels = kDefaultConeReuseVoxels;
 
     bool operator==(const ConeSettings&) const = default;
 };
@@ -94,6 +117,12 @@ const char* sampleConesName(bool narrowConesAfterFirstSample);
 // pixel samples trace are the pixels' alone: a gather of narrow cones at every voxel would multiply
 // the cost of a pass that already costs more than a frame.
 ConeSettings voxelGatherCones(ConeSettings settings);
+
+// Whether a frame's pixels share their narrow cones with their neighbours (shaders/cone_reuse.comp):
+// narrow cones, at most kMaxReusedCones of them, all (not one region's, `--only-cone`), and
+// reuseVoxels > 0. Only the first sample of a frame: the later samples' one cone each continues a
+// sequence of directions per block instead (conesForSample).
+bool reusesCones(const ConeSettings& settings);
 
 // How many pixels one trace of the cone set serves: each pixel its own, or one pixel of each 2×2
 // (half) or 4×4 (quarter) block, the others taking theirs from the traced pixels that share their
@@ -163,6 +192,11 @@ private:
     // The tracing programs for each count of lanes (coneLanes), made on first use; the upsampling.
     std::array<gl::Program, kMaxConeLanes + 1> tracePrograms_, traceListedPrograms_;
     gl::Program upsampleProgram_;
+    gl::Buffer coneSamples_;  // cone_reuse's input: every traced cell's narrow cones, made on first use
+    std::size_t coneSampleBytes_ = 0;
+    gl::Texture reused_;      // cone_reuse's output, the size of the traced image
+    int reusedWidth_ = 0, reusedHeight_ = 0;
+    gl::Program reuseProgram_;
     gl::Buffer counters_;
     gl::Buffer ownTracePixels_, dispatchArgs_;  // cone_upsample's list of pixels that trace their own
     ListDispatch listDispatch_;

@@ -211,6 +211,8 @@ void settingsSection(ViewerState& state, bool& changed) {
     changed |= ImGui::SliderInt("narrow cones per pixel (C; 0 = the cone set)", &s.cones.rays, 0, kMaxNarrowCones, "%d",
                                 ImGuiSliderFlags_AlwaysClamp);
     changed |= ImGui::Checkbox("narrow cones in later samples (at rest)", &s.cones.narrowConesAfterFirstSample);
+    changed |= ImGui::SliderFloat("cones shared with neighbours (voxels, 0 = off)", &s.cones.reuseVoxels, 0.0f, 16.0f,
+                                  "%.1f", ImGuiSliderFlags_AlwaysClamp);
     changed |= ImGui::SliderFloat("GI filter (voxels, 0 = off)", &s.giFilter, 0.0f, 16.0f, "%.1f",
                                   ImGuiSliderFlags_AlwaysClamp);
 
