@@ -92,6 +92,11 @@ TEST_F(PassGraphTest, EachChangeRerunsExactlyItsDependentPasses) {
     renderer.renderFrame(moved(camera));
     EXPECT_EQ(ran(renderer), (Names{Pass::ConeTrace, Pass::Composite})) << "cone settings";
 
+    s.cones.reuseVoxels = 0.0f;
+    renderer.setSettings(s);
+    renderer.renderFrame(moved(camera));
+    EXPECT_EQ(ran(renderer), (Names{Pass::ConeTrace, Pass::Composite})) << "cones shared between neighbours";
+
     s.giResolution = GiResolution::Full;
     renderer.setSettings(s);
     renderer.renderFrame(moved(camera));
@@ -261,8 +266,13 @@ TEST_F(PassGraphTest, BouncesFollowTheLightsAndTheirCountNeverTheCamera) {
     renderer.setSettings(s);
     renderer.renderFrame(moved(camera));
     EXPECT_EQ(ran(renderer), (Names{Pass::ConeTrace, Pass::Composite})) << "the cones of later samples: no bounce again";
+    s.cones.reuseVoxels = 0.0f;
+    renderer.setSettings(s);
+    renderer.renderFrame(moved(camera));
+    EXPECT_EQ(ran(renderer), (Names{Pass::ConeTrace, Pass::Composite})) << "cones shared or not: no bounce again";
     s.cones.rays = kDefaultNarrowCones;
     s.cones.narrowConesAfterFirstSample = true;
+    s.cones.reuseVoxels = kDefaultConeReuseVoxels;
     renderer.setSettings(s);
     renderer.renderFrame(moved(camera));
     EXPECT_TRUE(renderer.readHdr().rgba == threeBounces.rgba) << "back to the narrow cones, as before";
