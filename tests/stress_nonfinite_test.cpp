@@ -173,6 +173,7 @@ TEST(StressNonFinite, LightAndCameraValuesOnTheCommandLineAreRefused) {
         {"--gi-scale inf", "--gi-scale"},            {"--cone-aperture nan", "--cone-aperture"},
         {"--cone-step inf", "--cone-step"},          {"--cone-offset nan", "--cone-offset"},
         {"--cone-lift nan", "--cone-lift"},          {"--cone-lift inf", "--cone-lift"},
+        {"--cone-reuse nan", "--cone-reuse"},        {"--cone-reuse -1", "--cone-reuse"},
     };
     for (const auto& [options, mentions] : cases) expectRefused(options, mentions, dir);
     std::printf("[ nonfinite] %zu non-finite or out-of-range light, camera and display values on the command line: "
