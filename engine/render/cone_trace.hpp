@@ -44,17 +44,16 @@ constexpr int kNarrowConesPerDispatch = 4;
 // own (shaders/cone_reuse.comp): those of a window of 5×5 traced cells whose cones start on the same
 // side of both surfaces, weighted by a Gaussian of this σ (voxels) over their distance. Four cones
 // per pixel leave most of their noise where surfaces are small (a column's flutes, mouldings), which
-// the edge-aware filter has to keep apart; directions reused across them cut Sponza's indirect
-// RMSE by about a tenth for about 1 % of the cone tracing (docs/benchmark.md, "Cones shared between
-// neighbours"). Wider σ gained nothing measurable.
+// the edge-aware filter has to keep apart; directions reused across them lower that noise for a
+// small part of the cone tracing's cost (docs/benchmark.md, "Cones shared between neighbours").
+// A wider σ gained nothing measurable.
 constexpr float kDefaultConeReuseVoxels = 4.0f;
-// The window's radius in traced cells (REUSE_RADIUS in the shader): 3×3 cells gave two thirds of
-// the gain, 7×7 no more than 5×5, at a cost that grows with its fourth power.
+// The window's radius in traced cells (REUSE_RADIUS in the shader): 3×3 cells gave less of the
+// gain, 7×7 no more than 5×5, at a cost that grows with the fourth power of the window's side.
 constexpr int kConeReuseRadius = 2;
 // Pixels that trace more cones than this keep their own: their noise is already low, and what the
-// neighbours' cones see differently near their own apexes (a thin surface under another one) weighs
-// more than the noise they remove (measured with 16 cones: CameraMain's indirect RMSE −3 %,
-// CameraAlcove's +7 %; with 8, −6 % and +3 %).
+// neighbours' cones see differently near their own apexes (a thin surface under another one)
+// weighs about as much as the noise they would remove (docs/benchmark.md).
 constexpr int kMaxReusedCones = 8;
 // The reused cones are kept per traced cell (32 bytes each); beyond this much memory the pixels
 // keep their own cones (64 narrow cones at every pixel of a 1080p image would need 4 GiB).
