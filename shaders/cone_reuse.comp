@@ -1,6 +1,6 @@
 #version 450
 layout(local_size_x = 8, local_size_y = 8) in;
-// cone_reuse (render/cone_trace.hpp, reusesCones): each traced cell's irradiance from the narrow
+// cone_reuse (render/cone_reuse.hpp; when: reusesCones in render/cone_trace.hpp): each traced cell's irradiance from the narrow
 // cones of the traced cells around it as well as its own, before the edge-aware filter.
 //
 // A narrow cone brings back the light that arrives along its axis near its apex. A neighbour's
@@ -71,7 +71,7 @@ void main() {
             const vec3 qGeometric = texelFetch(uGeometricNormal, qPixel, 0).xyz;
             const vec3 offset = (qPosition - position) * uVoxelScale;
             const bool self = dx == 0 && dy == 0;
-            const float weight = self ? 1.0 : exp(-dot(offset, offset) * inverseTwoSigma2);
+            const float weight = exp(-dot(offset, offset) * inverseTwoSigma2);  // 1 for the cell itself
             if (!self && (weight < 1e-3 || dot(offset + qNormal * uConeOffset, geometric) < 0.5 ||
                           dot(normal * uConeOffset - offset, qGeometric) < 0.5))
                 continue;

@@ -51,8 +51,7 @@ std::size_t ConeTrace::bytes() const {
     const int b = std::max(tracedBlock_, 1);
     const std::size_t blocks = traced_.id() ? std::size_t((width_ + b - 1) / b) * ((height_ + b - 1) / b) : 0;
     const std::size_t ownTraceList = ownTracePixels_.id() ? std::size_t(width_) * height_ * 4 : 0;
-    const std::size_t reuse = coneSampleBytes_ + std::size_t(reusedWidth_) * reusedHeight_ * 16;
-    return full + blocks * (16 + 4) + ownTraceList + reuse + (filter_ ? filter_->bytes() : 0);
+    return full + blocks * (16 + 4) + ownTraceList + (reuse_ ? reuse_->bytes() : 0) + (filter_ ? filter_->bytes() : 0);
 }
 
 GiResolution parseGiResolution(const std::string& name) {
@@ -236,53 +235,29 @@ void ConeTrace::render(const GBuffer& gbuffer, const Octree& octree, const Radia
             call.uniform("uRayFirst", batch * kNarrowConesPerDispatch)
                 .uniform("uRayEnd", std::min((batch + 1) * kNarrowConesPerDispatch, settings.rays));
     };
-    const std::size_t coneSampleBytes = std::size_t(tracedWidth) * tracedHeight * std::max(settings.rays, 0) * 32;
-    const bool reuse = reusesCones(settings) && sampleCones.raySequence < 0 && coneSampleBytes <= kMaxConeReuseBytes;
-    if (reuse) {
-        const std::size_t bytes = coneSampleBytes;
-        if (coneSampleBytes_ < bytes) {
-            coneSamples_ = gl::createBuffer(GLsizeiptr(bytes), nullptr, 0, "narrow cones of the traced cells");
-            coneSampleBytes_ = bytes;
-        }
-        if (reusedWidth_ != tracedWidth || reusedHeight_ != tracedHeight) {
-            reused_ = gl::createTexture2D(GL_RGBA32F, tracedWidth, tracedHeight, 1, "indirect irradiance, cones reused");
-            reusedWidth_ = tracedWidth;
-            reusedHeight_ = tracedHeight;
-        }
-        if (!reuseProgram_.id())
-            reuseProgram_ = gl::buildProgram({{GL_COMPUTE_SHADER, "cone_reuse.comp"}},
-                                             {"REUSE_RADIUS " + std::to_string(kConeReuseRadius)});
-    }
+    // Neighbours share the frame's own narrow cones (the later samples' one cone each continues a
+    // sequence per block instead); a different traced image or cone count makes a new ConeReuse.
+    const bool reuse = reusesCones(settings) && sampleCones.raySequence < 0 &&
+                       ConeReuse::coneBytes(tracedWidth, tracedHeight, settings.rays) <= kMaxConeReuseBytes;
+    if (reuse && (!reuse_ || reuse_->width() != tracedWidth || reuse_->height() != tracedHeight ||
+                  reuse_->rays() != settings.rays))
+        reuse_ = std::make_unique<ConeReuse>(tracedWidth, tracedHeight, settings.rays);
     for (int batch = 0; batch < rayBatches; ++batch) {
         gl::ComputeCall call = tracingCall(tracePrograms_[lanes]);
         selectBatch(call, batch);
         call.uniform("uStoreConeSamples", reuse ? 1 : 0).uniform("uConeSampleRowLength", tracedWidth);
-        if (reuse) call.storage(gl::SSBO_CONE_SAMPLES, coneSamples_);
+        if (reuse) call.storage(gl::SSBO_CONE_SAMPLES, reuse_->cones());
         call.image(gl::IMAGE_INDIRECT, inBlocks ? traced_.id() : indirect_.id(), GL_READ_WRITE, GL_RGBA32F)
             .image(gl::IMAGE_TRACED_PIXEL, inBlocks ? tracedPixel_.id() : 0, GL_WRITE_ONLY, GL_R32UI)
             .uniform("uRotation", sample & (block * block - 1))
             .dispatchImage(tracedWidth, tracedHeight, GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
     }
-    // The filter runs on the traced image; a different image size (another GI resolution) makes
-    // a new one.
+    // The sharing and the filter run on the traced image; a different image size (another GI
+    // resolution) makes a new filter.
     GLuint traced = inBlocks ? traced_.id() : indirect_.id();
-    if (reuse) {
-        gl::ComputeCall(reuseProgram_)
-            .texture(gl::TEXTURE_GBUFFER_NORMAL, gbuffer.normal())
-            .texture(gl::TEXTURE_GBUFFER_GEOMETRIC_NORMAL, gbuffer.geometricNormal())
-            .texture(gl::TEXTURE_GBUFFER_POSITION, gbuffer.position())
-            .texture(gl::TEXTURE_TRACED_IRRADIANCE, traced)
-            .texture(gl::TEXTURE_TRACED_PIXEL, inBlocks ? tracedPixel_.id() : 0)
-            .storage(gl::SSBO_CONE_SAMPLES, coneSamples_)
-            .image(gl::IMAGE_INDIRECT, reused_.id(), GL_WRITE_ONLY, GL_RGBA32F)
-            .uniform("uDownscale", block)
-            .uniform("uRayCount", settings.rays)
-            .uniform("uVoxelScale", float(1.0 / octree.grid.voxelSize))
-            .uniform("uConeOffset", settings.offset)
-            .uniform("uReuseVoxels", settings.reuseVoxels)
-            .dispatchImage(tracedWidth, tracedHeight, GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
-        traced = reused_.id();
-    }
+    if (reuse)
+        traced = reuse_->render(gbuffer, traced, inBlocks ? tracedPixel_.id() : 0, octree.grid.voxelSize, settings.offset,
+                                settings.reuseVoxels);
     if (filterVoxels > 0.0f) {
         if (!filter_ || filter_->width() != tracedWidth || filter_->height() != tracedHeight)
             filter_ = std::make_unique<IndirectFilter>(tracedWidth, tracedHeight);

@@ -9,6 +9,7 @@
 #include "gl/objects.hpp"
 #include "lighting/list_dispatch.hpp"
 #include "lighting/radiance_volume.hpp"
+#include "render/cone_reuse.hpp"
 #include "render/cone_set.hpp"
 #include "render/gbuffer.hpp"
 #include "render/indirect_filter.hpp"
@@ -41,23 +42,17 @@ constexpr float kNarrowConeStep = 1.0f;
 constexpr int kNarrowConesPerDispatch = 4;
 
 // A traced pixel's irradiance takes the narrow cones of the traced pixels around it as well as its
-// own (shaders/cone_reuse.comp): those of a window of 5×5 traced cells whose cones start on the same
+// own (render/cone_reuse.hpp): those of a window of 5×5 traced cells whose cones start on the same
 // side of both surfaces, weighted by a Gaussian of this σ (voxels) over their distance. Four cones
 // per pixel leave most of their noise where surfaces are small (a column's flutes, mouldings), which
 // the edge-aware filter has to keep apart; directions reused across them lower that noise for a
 // small part of the cone tracing's cost (docs/benchmark.md, "Cones shared between neighbours").
 // A wider σ gained nothing measurable.
 constexpr float kDefaultConeReuseVoxels = 4.0f;
-// The window's radius in traced cells (REUSE_RADIUS in the shader): 3×3 cells gave less of the
-// gain, 7×7 no more than 5×5, at a cost that grows with the fourth power of the window's side.
-constexpr int kConeReuseRadius = 2;
 // Pixels that trace more cones than this keep their own: their noise is already low, and what the
 // neighbours' cones see differently near their own apexes (a thin surface under another one)
 // weighs about as much as the noise they would remove (docs/benchmark.md).
 constexpr int kMaxReusedCones = 8;
-// The reused cones are kept per traced cell (32 bytes each); beyond this much memory the pixels
-// keep their own cones (64 narrow cones at every pixel of a 1080p image would need 4 GiB).
-constexpr std::size_t kMaxConeReuseBytes = std::size_t(512) << 20;
 
 struct ConeSettings {
     int cones = 5;              // 1, 5, 6, 9 or 16 (cone_set.hpp)
@@ -191,14 +186,10 @@ private:
     // The tracing programs for each count of lanes (coneLanes), made on first use; the upsampling.
     std::array<gl::Program, kMaxConeLanes + 1> tracePrograms_, traceListedPrograms_;
     gl::Program upsampleProgram_;
-    gl::Buffer coneSamples_;  // cone_reuse's input: every traced cell's narrow cones, made on first use
-    std::size_t coneSampleBytes_ = 0;
-    gl::Texture reused_;      // cone_reuse's output, the size of the traced image
-    int reusedWidth_ = 0, reusedHeight_ = 0;
-    gl::Program reuseProgram_;
     gl::Buffer counters_;
     gl::Buffer ownTracePixels_, dispatchArgs_;  // cone_upsample's list of pixels that trace their own
     ListDispatch listDispatch_;
+    std::unique_ptr<ConeReuse> reuse_;        // sized for the traced image and cones, made on first use
     std::unique_ptr<IndirectFilter> filter_;  // sized for the traced image, made on first use
     GLuint result_ = 0;                       // indirect_, or at full resolution the filter's image
 };
