@@ -51,6 +51,9 @@ lines += ["", "Work saved inside passes (camera-moved frame for cones, light-mov
           f"- radiance filtered through {touched:,} of {nodes:,} nodes ({100*touched/nodes:.1f} %): the rest received no light",
           f"- cone samples taken {taken:,}; empty-space skipping saved {saved:,} more ({100*saved/(taken+saved):.1f} % of what a fixed-step march would take)",
           f"- sky pixels with no GI work: {c['sky_pixels_without_gi_work']:,}",
+          f"- pixels that took the last frame's indirect light in the camera-moved frame (`--cone-carry`): "
+          f"{c['pixels_with_carried_indirect_light']:,} of {int(width) * int(height) - c['sky_pixels_without_gi_work']:,}; "
+          f"pixels traced {c['cone_traced_pixels']:,}",
           f"- light-view maps rendered in the light-moved frame: {s['light_views_rendered']} of {s['light_views']}"]
 open(f"{out}/incremental_{tag}.md", "w").write("\n".join(lines) + "\n")
 print("\n".join(lines))

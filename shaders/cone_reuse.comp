@@ -47,7 +47,7 @@ void main() {
     if (any(greaterThanEqual(cell, size))) return;
     ivec2 pixel;
     vec3 position, normal;
-    if (!pointOf(cell, pixel, position, normal)) {  // sky: nothing traced
+    if (!pointOf(cell, pixel, position, normal) || carriedCell(cell)) {  // sky, or carried light: no cones
         imageStore(uReused, cell, texelFetch(uTraced, cell, 0));
         return;
     }
@@ -66,7 +66,8 @@ void main() {
             const ivec2 q = cell + ivec2(dx, dy);
             ivec2 qPixel;
             vec3 qPosition, qNormal;
-            if (any(lessThan(q, ivec2(0))) || any(greaterThanEqual(q, size)) || !pointOf(q, qPixel, qPosition, qNormal))
+            if (any(lessThan(q, ivec2(0))) || any(greaterThanEqual(q, size)) || !pointOf(q, qPixel, qPosition, qNormal) ||
+                carriedCell(q))
                 continue;
             const vec3 qGeometric = texelFetch(uGeometricNormal, qPixel, 0).xyz;
             const vec3 offset = (qPosition - position) * uVoxelScale;

@@ -1,24 +1,7 @@
 // Shared by cone_trace.comp and cone_upsample.comp. Requires cone_march.glsl.
 #include "traced_pixel.glsl"
 #include "cone_lanes.glsl"
-
-// What the cone passes did and saved, as 64-bit counts (low word, high word): samples taken,
-// samples that empty-space skipping saved (the steps the skipped nodes would have cost), pixels
-// that saw the sky, pixels whose own cones were traced. Read back by ConeTrace::statistics.
-// Then the length of cone_upsample's list of pixels that trace their own cones.
-layout(std430, binding = SSBO_CONE_COUNTERS) buffer ConeCounters { uint coneCounters[9]; };
-
-const uint CONE_COUNTER_SAMPLES = 0u;
-const uint CONE_COUNTER_SAMPLES_SAVED = 2u;
-const uint CONE_COUNTER_SKY_PIXELS = 4u;
-const uint CONE_COUNTER_TRACED_PIXELS = 6u;
-const uint CONE_COUNTER_OWN_TRACES = 8u;
-
-void count64(uint index, uint value) {
-    if (value == 0u) return;
-    uint old = atomicAdd(coneCounters[index], value);
-    if (old + value < old) atomicAdd(coneCounters[index + 1u], 1u);
-}
+#include "cone_counters.glsl"
 
 layout(binding = TEXTURE_GBUFFER_GEOMETRIC_NORMAL) uniform sampler2D uGeometricNormal;
 uniform int uDownscale;  // pixels per side of a traced block: 1 (every pixel), 2 or 4

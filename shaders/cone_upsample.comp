@@ -25,7 +25,6 @@ layout(binding = TEXTURE_GBUFFER_POSITION) uniform sampler2D uPosition;
 layout(binding = TEXTURE_TRACED_IRRADIANCE) uniform sampler2D uTraced;
 layout(binding = TEXTURE_TRACED_PIXEL) uniform usampler2D uTracedPixel;
 
-
 // Pixels that trace their own cones (packTracedPixel), their count in coneCounters.
 layout(std430, binding = SSBO_OWN_TRACE_PIXELS) buffer OwnTracePixels { uint ownTracePixels[]; };
 
@@ -41,6 +40,12 @@ void main() {
     if (traces && storesConeLanes()) storeTraced(pixel, finishTrace(gathered));
 }
 #else
+// Before any of that, a pixel that the last frame's light serves (pixel_carry.glsl: only the camera
+// moved, and a pixel of the last frame saw this surface point) takes it. Every pixel records the
+// point its light belongs to and its normal, for the next frame.
+#include "pixel_carry.glsl"
+layout(rgba32f, binding = IMAGE_PIXEL_AT) uniform writeonly image2D uPixelAt;
+layout(rgba8_snorm, binding = IMAGE_PIXEL_NORMAL) uniform writeonly image2D uPixelNormal;
 
 // Weights of a neighbour (sameSurfaceWeight): a point one voxel off the tangent plane keeps e⁻¹
 // of it; below kMinWeight the pixel has no neighbour on its surface.
@@ -81,10 +86,21 @@ void main() {
     const vec4 position = texelFetch(uPosition, pixel, 0);
     if (position.w <= 0.0) {
         imageStore(uIndirect, pixel, vec4(0.0, 0.0, 0.0, 1.0));
+        imageStore(uPixelAt, pixel, vec4(0.0));
         count64(CONE_COUNTER_SKY_PIXELS, 1u);
         return;
     }
     const vec3 normal = normalize(texelFetch(uNormal, pixel, 0).xyz);
+    const ivec2 carried = carriedPixelFor(position.xyz, normal);
+    if (carried.x >= 0) {
+        imageStore(uIndirect, pixel, texelFetch(uCarriedIrradiance, carried, 0));
+        imageStore(uPixelAt, pixel, texelFetch(uCarriedAt, carried, 0));
+        imageStore(uPixelNormal, pixel, texelFetch(uCarriedNormal, carried, 0));
+        count64(CONE_COUNTER_CARRIED_PIXELS, 1u);
+        return;
+    }
+    imageStore(uPixelAt, pixel, vec4(position.xyz, 1.0));
+    imageStore(uPixelNormal, pixel, vec4(normal, 0.0));
     // Block centres sit at B·cell + (B − 1)/2 in pixels.
     const vec2 at = (vec2(pixel) + 0.5) / float(uDownscale) - 0.5;
     float weightSum;

@@ -16,3 +16,11 @@ bool pointOf(ivec2 cell, out ivec2 pixel, out vec3 position, out vec3 normal) {
     normal = normalize(texelFetch(uNormal, pixel, 0).xyz);
     return p.w > 0.0;
 }
+
+// Whether cell `cell` holds light carried from the last frame rather than its own cones
+// (cone_carry.comp).
+bool carriedCell(ivec2 cell) {
+    if (uDownscale == 1) return false;
+    const uint traced = texelFetch(uTracedPixel, cell, 0).r;
+    return traced != NO_TRACED_PIXEL && (traced & CARRIED_CELL) != 0u;
+}

@@ -5,9 +5,13 @@
 
 // A block that sees only sky traced no pixel.
 const uint NO_TRACED_PIXEL = 0xffffffffu;
+// A block whose pixels all took the last frame's light (cone_carry.comp) traced no cones either:
+// its cell holds that light at the pixel named, which the passes after it read as any traced
+// cell's, except the shared cones (it has none).
+const uint CARRIED_CELL = 0x80000000u;
 
 uint packTracedPixel(ivec2 pixel) { return uint(pixel.x) | (uint(pixel.y) << 16); }
-ivec2 unpackTracedPixel(uint code) { return ivec2(code & 0xffffu, code >> 16); }
+ivec2 unpackTracedPixel(uint code) { return ivec2(code & 0xffffu, (code >> 16) & 0x7fffu); }
 
 // Irradiance varies slowly along a surface but jumps across edges, so a traced point counts for a
 // surface point in so far as it lies on the same surface: normals within ~25° keep most of the

@@ -51,6 +51,11 @@ void addRenderSettingsOptions(CLI::App& command, RenderSettingsOptions& o) {
                        "neighbour's cones get by its distance (0: every traced pixel keeps its own cones); it lowers "
                        "their noise where surfaces are too small for the edge-aware filter")
         ->capture_default_str();
+    command.add_option("--cone-carry", o.cones.carryVoxels,
+                       "when only the camera moved, a traced pixel takes the last frame's cones traced within this "
+                       "many voxels of its point on a surface facing the same way instead of tracing anew (0: every "
+                       "frame traces all its pixels)")
+        ->capture_default_str();
     command.add_option("--sample-cones", o.sampleCones,
                        "what the samples after the first of an accumulated frame (--samples, the viewer) trace: "
                        "narrow (one narrow cone per traced pixel, its direction stratified over the samples: the "

@@ -46,6 +46,7 @@
     X(SSBO_BOUNCE_LIST, 26)          /* bounce_gather: cells that gather their own bounce */      \
     X(SSBO_OWN_TRACE_PIXELS, 27)     /* cone_upsample: pixels that trace their own cones */        \
     X(SSBO_CONE_SAMPLES, 28)         /* cone_trace → cone_reuse: each narrow cone's own result */  \
+    X(SSBO_TRACE_CELLS, 29)          /* cone_carry → cone_trace: the cells to trace */             \
     /* Image units (glBindImageTexture). */                                                       \
     X(IMAGE_FRAGMENTS, 0)            /* voxel-fragment list, RGBA32UI */                          \
     X(IMAGE_FRAGMENT_NODE, 1)        /* the node of each fragment, R32UI */                       \
@@ -59,7 +60,9 @@
     X(IMAGE_DIRECTIONAL_RADIANCE, 2) /* the radiance pool of the six directions */                \
     X(IMAGE_DIRECT, 0)                                                                            \
     X(IMAGE_INDIRECT, 0)                                                                          \
-    X(IMAGE_TRACED_PIXEL, 1)         /* cone_trace in blocks: the pixel each block traced */ \
+    X(IMAGE_TRACED_PIXEL, 1)         /* cone_carry in blocks: the pixel each block traced */ \
+    X(IMAGE_PIXEL_AT, 3)             /* cone_upsample: the point each pixel's light belongs to */ \
+    X(IMAGE_PIXEL_NORMAL, 4)         /* and its normal */                                         \
     X(IMAGE_VOXEL_VIEW, 0)                                                                        \
     X(IMAGE_HDR, 0)                                                                               \
     X(IMAGE_LDR, 1)                                                                               \
@@ -78,6 +81,9 @@
     X(TEXTURE_OPACITY_PLUS, 3)       /* opacity of the slabs along +x +y +z (brick_layout.hpp) */ \
     X(TEXTURE_OPACITY_MINUS, 4)      /* along −x −y −z */                                         \
     X(TEXTURE_DIRECTIONAL_RADIANCE, 6) /* the radiance pool of the six directions */              \
+    X(TEXTURE_CARRIED_AT, 8)         /* pixel_carry.glsl: the last frame's IMAGE_PIXEL_AT */      \
+    X(TEXTURE_CARRIED_NORMAL, 9)     /* and IMAGE_PIXEL_NORMAL */                                 \
+    X(TEXTURE_CARRIED_IRRADIANCE, 10) /* and its indirect irradiance */                           \
     X(TEXTURE_TRACED_IRRADIANCE, 12) /* cone_upsample, indirect_filter: what the cones gathered */ \
     X(TEXTURE_TRACED_PIXEL, 13)      /* cone_upsample, indirect_filter: the pixel each block traced */ \
     X(TEXTURE_VIEW_ALBEDO_BRICKS, 1) /* voxel_view: the albedo pool */                     \
@@ -94,7 +100,10 @@
     X(MISSED_COUNT_SLOT, 24)         /* list counts: photons that found no voxel */               \
     X(BOUNCE_LIST_COUNT_SLOT, 25)    /* list counts: cells that gather their own bounce */        \
     X(SECOND_SHARE_COUNT_SLOT, 26)   /* list counts: cells that share a leaf's second gather */    \
-    X(LIST_COUNT_SLOTS, 27)
+    X(LIST_COUNT_SLOTS, 27)                                                                       \
+    X(CONE_COUNTER_WORDS, 12)        /* cone counters: five 64-bit counts, two list lengths */    \
+    X(OWN_TRACE_COUNT_SLOT, 10)      /* cone counters: cone_upsample's pixels tracing their own */ \
+    X(TRACE_CELL_COUNT_SLOT, 11)     /* cone counters: cone_carry's cells for cone_trace */
 // clang-format on
 
 #include "gl/gl.hpp"

@@ -134,10 +134,20 @@ void gatherBounces(FrameResources& f) {
     f.statistics.bounceOwnGathers = f.bounces->ownGathers(*f.radiance);
 }
 
+// A number that changes whenever any input but the camera does: what the cones see and how they
+// trace it (their traces carry over camera moves only while it stays the same: cone_carry.hpp).
+// Every version only grows, so their sum does too.
+std::uint64_t versionBesidesCamera(const FrameResources& f) {
+    std::uint64_t sum = 0;
+    for (std::size_t i = 0; i < kInputCount; ++i)
+        if (Input(i) != Input::Camera) sum += f.versions[i];
+    return sum;
+}
+
 void traceCones(FrameResources& f, const FrameView& v) {
     if (!f.coneTrace) f.coneTrace = std::make_unique<ConeTrace>(f.settings.width, f.settings.height);
     f.coneTrace->render(*f.gbuffer, f.svo->octree(), *f.radiance, frameCones(f.settings), f.settings.giResolution,
-                        v.sample, f.settings.giFilter);
+                        v.sample, f.settings.giFilter, v.transform, versionBesidesCamera(f));
     f.coneStatisticsPending = true;
 }
 
@@ -242,7 +252,7 @@ const PassTable kFramePasses = {{
      {I::ConeSettings, I::PixelCones, I::GiResolution, I::GiFilter},
      {R::GBuffer, R::CellValues, R::CellRadiance, R::RadianceBricks, R::BouncedRadiance}, {R::IndirectIrradiance},
      unlessConeTrace,
-     "cone_trace.comp, cone_reuse.comp, indirect_filter.comp, cone_upsample.comp",
+     "cone_carry.comp, cone_trace.comp, cone_reuse.comp, indirect_filter.comp, cone_upsample.comp",
      traceCones},
     {Pass::VoxelView, "voxel_view", Stage::Camera,
      {I::Camera, I::OutputSize, I::ViewSettings, I::ConeSettings, I::PixelCones},

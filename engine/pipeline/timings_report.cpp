@@ -85,7 +85,8 @@ void writeTimingsJson(const std::filesystem::path& path, const TimingsReport& re
                           {"cone_samples", s.cones.samples},
                           {"cone_samples_saved_by_empty_space_skipping", s.cones.samplesSaved},
                           {"sky_pixels_without_gi_work", s.cones.skyPixels},
-                          {"cone_traced_pixels", s.cones.tracedPixels}};
+                          {"cone_traced_pixels", s.cones.tracedPixels},
+                          {"pixels_with_carried_indirect_light", s.cones.carriedPixels}};
     if (report.voxels) {
         const VoxelMemoryReport& v = *report.voxels;
         json["voxels"] = {{"levels", int(v.nodesPerLevel.size()) - 1},

@@ -12,17 +12,11 @@
 
 namespace vct {
 
-namespace {
-// In the cone counters (cone_trace_common.glsl): after four 64-bit counts, the length of the list
-// of pixels that trace their own cones.
-constexpr unsigned kOwnTraceCountSlot = 8;
-}  // namespace
-
 ConeTrace::ConeTrace(int width, int height)
     : width_(width),
       height_(height),
       indirect_(gl::createTexture2D(GL_RGBA32F, width, height, 1, "indirect irradiance")),
-      counters_(gl::createBuffer(4 * (kOwnTraceCountSlot + 1), nullptr, GL_DYNAMIC_STORAGE_BIT, "cone counters")) {}
+      counters_(gl::createBuffer(4 * gl::CONE_COUNTER_WORDS, nullptr, GL_DYNAMIC_STORAGE_BIT, "cone counters")) {}
 
 int coneLanes(const ConeSettings& settings) {
     const int cones = settings.rays > 0 ? std::min(settings.rays, kNarrowConesPerDispatch) : int(makeConeSet(settings.cones).size());
@@ -40,10 +34,10 @@ int coneLanes(const ConeSettings& settings) {
 std::string coneLanesDefine(int lanes) { return "CONE_LANES " + std::to_string(lanes); }
 
 ConeStatistics ConeTrace::statistics() const {
-    std::uint32_t c[8] = {};
+    std::uint32_t c[10] = {};
     glGetNamedBufferSubData(counters_.id(), 0, sizeof c, c);
     auto join = [&](int i) { return std::uint64_t(c[i]) | (std::uint64_t(c[i + 1]) << 32); };
-    return {join(0), join(2), join(4), join(6)};
+    return {join(0), join(2), join(4), join(6), join(8)};
 }
 
 std::size_t ConeTrace::bytes() const {
@@ -51,7 +45,8 @@ std::size_t ConeTrace::bytes() const {
     const int b = std::max(tracedBlock_, 1);
     const std::size_t blocks = traced_.id() ? std::size_t((width_ + b - 1) / b) * ((height_ + b - 1) / b) : 0;
     const std::size_t ownTraceList = ownTracePixels_.id() ? std::size_t(width_) * height_ * 4 : 0;
-    return full + blocks * (16 + 4) + ownTraceList + (reuse_ ? reuse_->bytes() : 0) + (filter_ ? filter_->bytes() : 0);
+    return full + blocks * (16 + 4) + ownTraceList + (reuse_ ? reuse_->bytes() : 0) + (filter_ ? filter_->bytes() : 0) +
+           (carry_ ? carry_->bytes() : 0);
 }
 
 GiResolution parseGiResolution(const std::string& name) {
@@ -112,6 +107,8 @@ void validateConeSettings(const ConeSettings& s) {
              " (0 is the cone along the normal)");
     if (!(s.reuseVoxels >= 0.0f && s.reuseVoxels <= 64.0f))
         fail("--cone-reuse ", s.reuseVoxels, " is out of range; use 0 (each pixel its own cones) .. 64 voxels");
+    if (!(s.carryVoxels >= 0.0f && s.carryVoxels <= 4.0f))
+        fail("--cone-carry ", s.carryVoxels, " is out of range; use 0 (every frame traces anew) .. 4 voxels");
     if (!(s.maxDistance >= 0.0f) || !std::isfinite(s.maxDistance))
         fail("cone maximum distance ", s.maxDistance, " must be a finite number ≥ 0 (0: the whole volume)");
 }
@@ -185,11 +182,13 @@ ConeSettings voxelGatherCones(ConeSettings settings) {
     settings.rays = 0;
     settings.narrowConesAfterFirstSample = ConeSettings{}.narrowConesAfterFirstSample;
     settings.reuseVoxels = ConeSettings{}.reuseVoxels;
+    settings.carryVoxels = ConeSettings{}.carryVoxels;
     return settings;
 }
 
 void ConeTrace::render(const GBuffer& gbuffer, const Octree& octree, const RadianceVolume& radiance,
-                       const ConeSettings& frame, GiResolution resolution, int sample, float filterVoxels) {
+                       const ConeSettings& frame, GiResolution resolution, int sample, float filterVoxels,
+                       const ViewTransform& view, std::uint64_t sceneVersion) {
     const SampleCones sampleCones = conesForSample(frame, sample);
     const ConeSettings& settings = sampleCones.cones;
     const int block = giBlockSize(resolution, width_, height_);
@@ -201,9 +200,11 @@ void ConeTrace::render(const GBuffer& gbuffer, const Octree& octree, const Radia
         tracedBlock_ = block;
     }
     const int lanes = coneLanes(settings);
-    if (!tracePrograms_[lanes].id())
+    if (!tracePrograms_[lanes].id()) {
         tracePrograms_[lanes] =
             gl::buildProgram({{GL_COMPUTE_SHADER, "cone_trace.comp"}}, {coneLanesDefine(lanes), "STORE_CONE_SAMPLES 1"});
+        if (!traceArgs_.id()) traceArgs_ = gl::createBuffer(12, nullptr, 0, "traced cells' dispatch arguments");
+    }
     if (inBlocks && !traceListedPrograms_[lanes].id())
         traceListedPrograms_[lanes] =
             gl::buildProgram({{GL_COMPUTE_SHADER, "cone_upsample.comp"}}, {"TRACE_LISTED 1", coneLanesDefine(lanes)});
@@ -242,19 +243,30 @@ void ConeTrace::render(const GBuffer& gbuffer, const Octree& octree, const Radia
     if (reuse && (!reuse_ || reuse_->width() != tracedWidth || reuse_->height() != tracedHeight ||
                   reuse_->rays() != settings.rays))
         reuse_ = std::make_unique<ConeReuse>(tracedWidth, tracedHeight, settings.rays);
+    // The cells that trace are listed (cone_carry.comp): in a frame after a camera move, not those
+    // whose pixels all take the last frame's light. Only a frame's first sample carries it and is
+    // remembered: the later ones trace other pixels of each block with other cones.
+    const GLuint tracedImage = inBlocks ? traced_.id() : indirect_.id();
+    if (!carry_ || carry_->tracedWidth() != tracedWidth || carry_->tracedHeight() != tracedHeight)
+        carry_ = std::make_unique<ConeCarry>(width_, height_, tracedWidth, tracedHeight);
+    const int rotation = sample & (block * block - 1);
+    carry_->listCells(gbuffer, tracedImage, inBlocks ? tracedPixel_.id() : 0, counters_, {block, sceneVersion}, view,
+                      rotation, octree.grid.voxelSize, sample == 0 ? settings.carryVoxels : 0.0f);
     for (int batch = 0; batch < rayBatches; ++batch) {
         gl::ComputeCall call = tracingCall(tracePrograms_[lanes]);
         selectBatch(call, batch);
         call.uniform("uStoreConeSamples", reuse ? 1 : 0).uniform("uConeSampleRowLength", tracedWidth);
         if (reuse) call.storage(gl::SSBO_CONE_SAMPLES, reuse_->cones());
-        call.image(gl::IMAGE_INDIRECT, inBlocks ? traced_.id() : indirect_.id(), GL_READ_WRITE, GL_RGBA32F)
-            .image(gl::IMAGE_TRACED_PIXEL, inBlocks ? tracedPixel_.id() : 0, GL_WRITE_ONLY, GL_R32UI)
-            .uniform("uRotation", sample & (block * block - 1))
-            .dispatchImage(tracedWidth, tracedHeight, GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+        call.storage(gl::SSBO_TRACE_CELLS, carry_->traceCells())
+            .image(gl::IMAGE_INDIRECT, tracedImage, GL_READ_WRITE, GL_RGBA32F)
+            .uniform("uRotation", rotation);
+        listDispatch_.dispatch(call, counters_, gl::TRACE_CELL_COUNT_SLOT, traceArgs_, 0,
+                               GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT |
+                                   GL_SHADER_STORAGE_BARRIER_BIT);
     }
     // The sharing and the filter run on the traced image; a different image size (another GI
     // resolution) makes a new filter.
-    GLuint traced = inBlocks ? traced_.id() : indirect_.id();
+    GLuint traced = tracedImage;
     if (reuse)
         traced = reuse_->render(gbuffer, traced, inBlocks ? tracedPixel_.id() : 0, octree.grid.voxelSize, settings.offset,
                                 settings.reuseVoxels);
@@ -274,14 +286,17 @@ void ConeTrace::render(const GBuffer& gbuffer, const Octree& octree, const Radia
                 .image(gl::IMAGE_INDIRECT, indirect_.id(), GL_READ_WRITE, GL_RGBA32F);
             return call;
         };
-        upsampleCall(upsampleProgram_)
-            .dispatchImage(width_, height_, GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+        gl::ComputeCall upsample = upsampleCall(upsampleProgram_);
+        carry_->bindCarried(upsample);
+        upsample.dispatchImage(width_, height_,
+                               GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
         for (int batch = 0; batch < rayBatches; ++batch) {
             gl::ComputeCall call = upsampleCall(traceListedPrograms_[lanes]);
             selectBatch(call, batch);
-            listDispatch_.dispatch(call, counters_, kOwnTraceCountSlot, dispatchArgs_, 0,
+            listDispatch_.dispatch(call, counters_, gl::OWN_TRACE_COUNT_SLOT, dispatchArgs_, 0,
                                    GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
         }
+        if (sample == 0) carry_->remember(indirect_.id());
     }
     gl::checkErrors("tracing cones");
 }

@@ -9,6 +9,7 @@
 #include "gl/objects.hpp"
 #include "lighting/list_dispatch.hpp"
 #include "lighting/radiance_volume.hpp"
+#include "render/cone_carry.hpp"
 #include "render/cone_reuse.hpp"
 #include "render/cone_set.hpp"
 #include "render/gbuffer.hpp"
@@ -73,6 +74,10 @@ struct ConeSettings {
     // Narrow cones shared between neighbouring traced pixels (`--cone-reuse`, shaders/cone_reuse.comp):
     // σ in voxels of the weight a neighbour's cones get by its distance; 0: each pixel its own.
     float reuseVoxels = kDefaultConeReuseVoxels;
+    // Indirect light carried over camera moves (`--cone-carry`, render/cone_carry.hpp): how far
+    // (voxels, beyond a pixel's footprint) the point where a pixel's light was estimated may lie
+    // from the point it serves now; 0: every frame traces anew.
+    float carryVoxels = kDefaultConeCarryVoxels;
 
     bool operator==(const ConeSettings&) const = default;
 };
@@ -163,6 +168,7 @@ struct ConeStatistics {
     std::uint64_t samplesSaved = 0;  // samples empty-space skipping made unnecessary
     std::uint64_t skyPixels = 0;     // pixels with no GI work
     std::uint64_t tracedPixels = 0;  // pixels whose own cones were traced
+    std::uint64_t carriedPixels = 0; // pixels that took the last frame's indirect light (cone_carry.hpp)
 };
 
 class ConeTrace {
@@ -171,11 +177,14 @@ public:
     // `sample`: the pixel sample of an accumulated frame. It turns which pixel of each block is
     // traced, so that accumulated samples trace every pixel in turn, and chooses the cones
     // (conesForSample). `filterVoxels`: the width of the edge-aware filter of what the cones traced
-    // (indirect_filter.hpp), 0: none.
+    // (indirect_filter.hpp), 0: none. `view`: the camera's; `sceneVersion` changes whenever anything
+    // but the camera does (geometry, lights, settings): a frame of another version never takes
+    // the last frame's light (cone_carry.hpp).
     void render(const GBuffer& gbuffer, const Octree& octree, const RadianceVolume& radiance, const ConeSettings& frame,
-                GiResolution resolution, int sample, float filterVoxels);
+                GiResolution resolution, int sample, float filterVoxels, const ViewTransform& view,
+                std::uint64_t sceneVersion);
     GLuint indirect() const { return result_; }  // RGBA32F: irradiance, visibility
-    ConeStatistics statistics() const;  // of the last render (reads back 32 bytes)
+    ConeStatistics statistics() const;  // of the last render (reads back 40 bytes)
     std::size_t bytes() const;
 
 private:
@@ -188,7 +197,9 @@ private:
     gl::Program upsampleProgram_;
     gl::Buffer counters_;
     gl::Buffer ownTracePixels_, dispatchArgs_;  // cone_upsample's list of pixels that trace their own
+    gl::Buffer traceArgs_;                      // the dispatch arguments of cone_carry's list of cells
     ListDispatch listDispatch_;
+    std::unique_ptr<ConeCarry> carry_;        // sized for the traced image
     std::unique_ptr<ConeReuse> reuse_;        // sized for the traced image and cones, made on first use
     std::unique_ptr<IndirectFilter> filter_;  // sized for the traced image, made on first use
     GLuint result_ = 0;                       // indirect_, or at full resolution the filter's image

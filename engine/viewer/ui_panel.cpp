@@ -213,6 +213,8 @@ void settingsSection(ViewerState& state, bool& changed) {
     changed |= ImGui::Checkbox("narrow cones in later samples (at rest)", &s.cones.narrowConesAfterFirstSample);
     changed |= ImGui::SliderFloat("cones shared with neighbours (voxels, 0 = off)", &s.cones.reuseVoxels, 0.0f, 16.0f,
                                   "%.1f", ImGuiSliderFlags_AlwaysClamp);
+    changed |= ImGui::SliderFloat("cones carried over camera moves (voxels, 0 = off)", &s.cones.carryVoxels, 0.0f, 4.0f,
+                                  "%.2f", ImGuiSliderFlags_AlwaysClamp);
     changed |= ImGui::SliderFloat("GI filter (voxels, 0 = off)", &s.giFilter, 0.0f, 16.0f, "%.1f",
                                   ImGuiSliderFlags_AlwaysClamp);
 
