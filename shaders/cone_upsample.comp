@@ -94,7 +94,7 @@ void main() {
     const ivec2 carried = carriedPixelFor(position.xyz, normal);
     if (carried.x >= 0) {
         imageStore(uIndirect, pixel, texelFetch(uCarriedIrradiance, carried, 0));
-        imageStore(uPixelAt, pixel, texelFetch(uCarriedAt, carried, 0));
+        imageStore(uPixelAt, pixel, texelFetch(uCarriedAt, carried, 0) + vec4(0.0, 0.0, 0.0, 1.0));  // a frame older
         imageStore(uPixelNormal, pixel, texelFetch(uCarriedNormal, carried, 0));
         count64(CONE_COUNTER_CARRIED_PIXELS, 1u);
         return;

@@ -6,12 +6,12 @@
 // serves a pixel of this one when the point its light was estimated at lies on the surface this
 // pixel sees: within kCarryPlaneVoxels of its tangent plane (nothing stands in front of it), facing
 // the same way (normals within uCarryCos), and within uCarryVoxels plus this pixel's footprint on
-// the surface of this pixel's point (the last frame's pixels are about a pixel apart there). A carried pixel keeps the point
-// its light was estimated at, however many frames it is carried, so it never stands for light
-// farther than that from where it was estimated.
+// the surface of this pixel's point (the last frame's pixels are about a pixel apart there). Light
+// keeps the point it was estimated at, so it never stands for light farther than that from where
+// it was estimated, and it is carried for at most a few frames (carryFramesAt).
 
-// The last frame's pixels: the point each one's light belongs to (xyz scene-local, w = 1; w = 0:
-// none), its unit normal, and its indirect irradiance and visibility.
+// The last frame's pixels: the point each one's light belongs to (xyz scene-local; w = 1 + the
+// frames it has been carried, 0: none), its unit normal, and its indirect irradiance and visibility.
 layout(binding = TEXTURE_CARRIED_AT) uniform sampler2D uCarriedAt;
 layout(binding = TEXTURE_CARRIED_NORMAL) uniform sampler2D uCarriedNormal;
 layout(binding = TEXTURE_CARRIED_IRRADIANCE) uniform sampler2D uCarriedIrradiance;
@@ -24,8 +24,19 @@ uniform float uPixelAngle;            // this frame's pixel footprint per unit o
 uniform float uCarryVoxels;
 uniform float uCarryCos;
 uniform float uCarryScale;            // voxels per world unit
+uniform int uCarryFrames;             // the most frames light is carried (kConeCarryFrames)
 
 const float kCarryPlaneVoxels = 0.25;
+
+// How many frames the light estimated at `point` is carried at most: from half of uCarryFrames to
+// all of it, by a hash of its voxel, so that a view's light does not all expire in one frame.
+int carryFramesAt(vec3 point) {
+    uvec3 v = uvec3(ivec3(floor(point * uCarryScale)));
+    uint h = v.x * 73856093u ^ v.y * 19349663u ^ v.z * 83492791u;
+    h ^= h >> 16; h *= 0x7feb352du; h ^= h >> 15;
+    const int half_ = max(uCarryFrames / 2, 1);
+    return half_ + int(h % uint(uCarryFrames - half_ + 1));
+}
 
 // The last frame's pixel that serves this frame's surface point `position` (normal `normal`): of
 // the 3×3 pixels around where the last camera saw it, the one whose light belongs nearest; (-1, -1)
@@ -37,8 +48,8 @@ ivec2 carriedPixelFor(vec3 position, vec3 normal) {
     const ivec2 size = textureSize(uCarriedAt, 0);
     const ivec2 around = ivec2(floor((clip.xy / clip.w * 0.5 + 0.5) * vec2(size)));
     // A pixel's footprint: its angle times the distance along the camera's axis, stretched by the
-    // slant at which the surface is seen (up to 4×: at a grazing angle a pixel spans a stretch of
-    // surface whose light the last frame's pixels would not all have seen).
+    // slant at which the surface is seen (up to 4×): at a grazing angle the last frame's pixels lie
+    // farther apart on the surface.
     const float depth = (uViewProjection * vec4(position, 1.0)).w;
     const float slant = max(abs(dot(normal, normalize(uEye - position))), 0.25);
     const float reach = uCarryVoxels + depth * uPixelAngle / slant * uCarryScale;
@@ -59,5 +70,9 @@ ivec2 carriedPixelFor(vec3 position, vec3 normal) {
                 best = from;
             }
         }
+    // Light carried as long as its point allows is estimated anew, even where a neighbour's could
+    // stand in for it: otherwise the neighbours' light would go on in its place.
+    if (best.x >= 0 && texelFetch(uCarriedAt, best, 0).w > float(carryFramesAt(texelFetch(uCarriedAt, best, 0).xyz)))
+        return ivec2(-1);
     return best;
 }

@@ -52,9 +52,9 @@ void addRenderSettingsOptions(CLI::App& command, RenderSettingsOptions& o) {
                        "their noise where surfaces are too small for the edge-aware filter")
         ->capture_default_str();
     command.add_option("--cone-carry", o.cones.carryVoxels,
-                       "when only the camera moved, a traced pixel takes the last frame's cones traced within this "
-                       "many voxels of its point on a surface facing the same way instead of tracing anew (0: every "
-                       "frame traces all its pixels)")
+                       "when only the camera moved, a pixel takes the last frame's indirect light where a pixel of it "
+                       "saw the same surface point (within this many voxels plus the pixel's footprint, facing the same "
+                       "way), for a frame or two, instead of tracing cones anew (0: every frame traces all its pixels)")
         ->capture_default_str();
     command.add_option("--sample-cones", o.sampleCones,
                        "what the samples after the first of an accumulated frame (--samples, the viewer) trace: "

@@ -88,6 +88,17 @@ void Renderer::renderFrame(const Camera& camera, int sample) {
     const bool othersUnchanged = frame_.versions == versionsAfterLastFrame_ && samplesInOutput_ > 0;
     const bool sameCamera = lastCamera_ == camera;
     const bool continues = othersUnchanged && sameCamera && sample == lastSample_ + 1;
+    timer_.beginFrame();
+    // Light carried over a camera move is the last frames' estimate (render/cone_carry.hpp): an
+    // image that goes on to average samples at rest first traces its first sample again, anew (a
+    // new version of the pixels' cones carries nothing and re-runs only cone_trace and composite,
+    // on the G-buffer sample 0 left), so that what it converges to does not depend on how the
+    // camera got there.
+    if (continues && lastSample_ == 0 && frame_.coneTrace && frame_.coneTrace->carried()) {
+        bump(Input::PixelCones);
+        samplesInOutput_ = 1;
+        execute(camera, {Resource::Output}, 0);
+    }
     if (!sameCamera || sample != lastSample_) {
         bump(Input::Camera);
         samplesInOutput_ = continues ? samplesInOutput_ + 1 : 1;
@@ -98,14 +109,24 @@ void Renderer::renderFrame(const Camera& camera, int sample) {
     lastSample_ = sample;
     // With fullFrames every image is built from scratch; its further samples re-run only the
     // camera's passes, as after any other change.
-    run(camera, {Resource::Output}, frame_.settings.fullFrames && !continues, sample);
+    if (frame_.settings.fullFrames && !continues) bump(Input::Geometry);
+    execute(camera, {Resource::Output}, sample);
+    timer_.endFrame();
+    gl::checkErrors("rendering a frame");
     versionsAfterLastFrame_ = frame_.versions;
 }
 
 void Renderer::buildOctree() { run(std::nullopt, {Resource::GeometryBricks}, frame_.settings.fullFrames); }
 
-void Renderer::run(const std::optional<Camera>& camera, ResourceSet targets, bool everyPass, int sample) {
+void Renderer::run(const std::optional<Camera>& camera, ResourceSet targets, bool everyPass) {
     if (everyPass) bump(Input::Geometry);
+    timer_.beginFrame();
+    execute(camera, targets, 0);
+    timer_.endFrame();
+    gl::checkErrors("rendering a frame");
+}
+
+void Renderer::execute(const std::optional<Camera>& camera, ResourceSet targets, int sample) {
     FrameView view;
     if (camera) {
         view.camera = &*camera;
@@ -115,17 +136,14 @@ void Renderer::run(const std::optional<Camera>& camera, ResourceSet targets, boo
         view.samplesInAverage = samplesInOutput_;
     }
     const std::vector<PassRun> plan = graph_.plan(frame_.versions, frame_.settings, targets);
-    timer_.beginFrame();
     for (const PassRun& pass : plan) {
         if (!pass.ran) continue;
         gl::DebugGroup group(pass.name);
         gl::GpuTimer::Scope scope(timer_, pass.name);
         declaration(pass.pass).run(frame_, view);
     }
-    timer_.endFrame();
     graph_.commit(plan, frame_.versions);
     lastFrame_ = plan;
-    gl::checkErrors("rendering a frame");
 }
 
 const FrameStatistics& Renderer::statistics() const {

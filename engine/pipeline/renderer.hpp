@@ -41,7 +41,8 @@ public:
     // `sample` picks where in each pixel this frame looks (render/pixel_samples.hpp; 0 = the
     // centre). The output holds the average of the samples since the last restart: sample k > 0
     // right after sample k − 1 of the same camera, with nothing else changed, adds to the average;
-    // any other frame restarts it with its own sample.
+    // any other frame restarts it with its own sample. A sample 0 that took light carried over a
+    // camera move is traced again, anew, before sample 1 adds to it (in sample 1's timings).
     void renderFrame(const Camera& camera, int sample = 0);
     // How many samples the output averages.
     int samplesInOutput() const { return samplesInOutput_; }
@@ -65,8 +66,11 @@ public:
     const std::vector<Light>& lights() const { return frame_.lights; }
 
 private:
-    // `everyPass`: as if the geometry changed (RenderSettings::fullFrames); `sample`: the pixel sample.
-    void run(const std::optional<Camera>& camera, ResourceSet targets, bool everyPass, int sample = 0);
+    // One timer frame of the passes that `targets` need; `everyPass`: all of them, as if the
+    // geometry changed (RenderSettings::fullFrames).
+    void run(const std::optional<Camera>& camera, ResourceSet targets, bool everyPass);
+    // The passes that `targets` need for pixel sample `sample`, within the current timer frame.
+    void execute(const std::optional<Camera>& camera, ResourceSet targets, int sample);
     void createSizedTargets();
     void bump(Input input) { ++frame_.versions[std::size_t(input)]; }
 

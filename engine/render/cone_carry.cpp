@@ -31,7 +31,8 @@ void ConeCarry::setCarryUniforms(gl::ComputeCall& call) const {
         .uniform("uPixelAngle", 2.0f / (view_.projection[1][1] * float(view_.height)))
         .uniform("uCarryVoxels", maxVoxels_)
         .uniform("uCarryCos", kConeCarryCos)
-        .uniform("uCarryScale", voxelScale_);
+        .uniform("uCarryScale", voxelScale_)
+        .uniform("uCarryFrames", kConeCarryFrames);
 }
 
 void ConeCarry::listCells(const GBuffer& gbuffer, GLuint traced, GLuint tracedPixel, const gl::Buffer& counters,

@@ -184,6 +184,8 @@ public:
                 GiResolution resolution, int sample, float filterVoxels, const ViewTransform& view,
                 std::uint64_t sceneVersion);
     GLuint indirect() const { return result_; }  // RGBA32F: irradiance, visibility
+    // Whether the last render took light from the frame before it (cone_carry.hpp).
+    bool carried() const { return carry_ && carry_->carries(); }
     ConeStatistics statistics() const;  // of the last render (reads back 40 bytes)
     std::size_t bytes() const;
 
