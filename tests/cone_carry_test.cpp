@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "cornell_irradiance.hpp"
 #include "gl/context.hpp"
 #include "metrics/image_metrics.hpp"
 #include "metrics/region_ratio.hpp"
@@ -17,19 +18,6 @@ using namespace vct;
 
 namespace {
 
-// Cornell's irradiance (AOV indirect) at 160×120 in 2×2 blocks, 128³.
-RenderSettings cornellSettings(int rays = kDefaultNarrowCones) {
-    RenderSettings s;
-    s.width = 160;
-    s.height = 120;
-    s.voxelLevels = 7;
-    s.lightViewResolution = 1024;
-    s.display.aov = Aov::Indirect;
-    s.giResolution = GiResolution::Half;
-    s.cones.rays = rays;
-    return s;
-}
-
 // `camera` with its eye turned by `angle` radians around the target's vertical axis (the CLI's
 // `--camera-path orbit`).
 Camera turned(const Camera& camera, double angle) {
@@ -38,6 +26,12 @@ Camera turned(const Camera& camera, double angle) {
     c.eye = camera.target +
             glm::dvec3(std::cos(angle) * d.x + std::sin(angle) * d.z, d.y, -std::sin(angle) * d.x + std::cos(angle) * d.z);
     return c;
+}
+
+// A renderer that drew the scene's camera and then `moved`: its second frame carried light.
+void renderMove(Renderer& renderer, const Scene& scene, const Camera& moved) {
+    renderer.renderFrame(scene.cameras[0]);
+    renderer.renderFrame(moved);
 }
 
 // The share of the pixels that see a surface which took the last frame's light.
@@ -54,14 +48,14 @@ double carriedShare(const Renderer& renderer, const RenderSettings& s) {
 TEST(ConeCarry, ATinyCameraMoveCarriesEveryCell) {
     auto context = gl::createContext(gl::defaultBackend());
     const Scene scene = makeCornellBox();
-    Renderer renderer(scene, cornellSettings());
+    Renderer renderer(scene, test::cornellIrradianceSettings());
     renderer.renderFrame(scene.cameras[0]);
     EXPECT_EQ(renderer.statistics().cones.carriedPixels, 0u);  // nothing to carry from
     renderer.renderFrame(turned(scene.cameras[0], 1e-4));
     const ConeStatistics c = renderer.statistics().cones;
     std::printf("[ carry ] tiny move: %.2f %% of the pixels carried, %llu traced\n",
-                100.0 * carriedShare(renderer, cornellSettings()), (unsigned long long)c.tracedPixels);
-    EXPECT_GE(carriedShare(renderer, cornellSettings()), 0.99);
+                100.0 * carriedShare(renderer, test::cornellIrradianceSettings()), (unsigned long long)c.tracedPixels);
+    EXPECT_GE(carriedShare(renderer, test::cornellIrradianceSettings()), 0.99);
     EXPECT_LT(c.tracedPixels, 0.01 * 80 * 60);
 }
 
@@ -71,11 +65,11 @@ TEST(ConeCarry, ATinyCameraMoveCarriesEveryCell) {
 TEST(ConeCarry, LightIsCarriedForAFrameOrTwo) {
     auto context = gl::createContext(gl::defaultBackend());
     const Scene scene = makeCornellBox();
-    Renderer renderer(scene, cornellSettings());
+    Renderer renderer(scene, test::cornellIrradianceSettings());
     std::vector<double> shares;
     for (int frame = 0; frame < 5; ++frame) {
         renderer.renderFrame(turned(scene.cameras[0], 1e-4 * frame));
-        shares.push_back(carriedShare(renderer, cornellSettings()));
+        shares.push_back(carriedShare(renderer, test::cornellIrradianceSettings()));
     }
     std::printf("[ carry ] tiny moves, share carried per frame: %.3f %.3f %.3f %.3f %.3f\n", shares[0], shares[1],
                 shares[2], shares[3], shares[4]);
@@ -93,16 +87,15 @@ TEST(ConeCarry, ACameraMoveCarriesMostCellsAndKeepsTheLight) {
     auto context = gl::createContext(gl::defaultBackend());
     const Scene scene = makeCornellBox();
     const Camera moved = turned(scene.cameras[0], 0.05);
-    Renderer carrying(scene, cornellSettings());
-    carrying.renderFrame(scene.cameras[0]);
-    carrying.renderFrame(moved);
+    Renderer carrying(scene, test::cornellIrradianceSettings());
+    renderMove(carrying, scene, moved);
     const ImageF carried = carrying.readHdr();
-    const double share = carriedShare(carrying, cornellSettings());
+    const double share = carriedShare(carrying, test::cornellIrradianceSettings());
 
-    Renderer fresh(scene, cornellSettings());
+    Renderer fresh(scene, test::cornellIrradianceSettings());
     fresh.renderFrame(moved);
     const ImageF traced = fresh.readHdr();
-    Renderer converging(scene, cornellSettings(64));
+    Renderer converging(scene, test::cornellIrradianceSettings(64));
     converging.renderFrame(moved);
     const ImageF converged = converging.readHdr();
 
@@ -128,14 +121,14 @@ TEST(ConeCarry, ACameraMoveCarriesMostCellsAndKeepsTheLight) {
 TEST(ConeCarry, AnythingButTheCameraChangedTracesEveryCell) {
     auto context = gl::createContext(gl::defaultBackend());
     const Scene scene = makeCornellBox();
-    Renderer renderer(scene, cornellSettings());
+    Renderer renderer(scene, test::cornellIrradianceSettings());
     renderer.renderFrame(scene.cameras[0]);
     std::vector<Light> lights = renderer.lights();
     lights[0].color *= 0.5;
     renderer.setLights(lights);
     renderer.renderFrame(turned(scene.cameras[0], 1e-4));
     EXPECT_EQ(renderer.statistics().cones.carriedPixels, 0u);
-    RenderSettings s = cornellSettings();
+    RenderSettings s = test::cornellIrradianceSettings();
     s.giFilter *= 0.5f;
     renderer.setSettings(s);
     renderer.renderFrame(turned(scene.cameras[0], 2e-4));
@@ -149,12 +142,11 @@ TEST(ConeCarry, AnythingButTheCameraChangedTracesEveryCell) {
 TEST(ConeCarry, OffIsAFreshFrame) {
     auto context = gl::createContext(gl::defaultBackend());
     const Scene scene = makeCornellBox();
-    RenderSettings s = cornellSettings();
+    RenderSettings s = test::cornellIrradianceSettings();
     s.cones.carryVoxels = 0.0f;
     const Camera moved = turned(scene.cameras[0], 0.05);
     Renderer renderer(scene, s);
-    renderer.renderFrame(scene.cameras[0]);
-    renderer.renderFrame(moved);
+    renderMove(renderer, scene, moved);
     EXPECT_EQ(renderer.statistics().cones.carriedPixels, 0u);
     Renderer fresh(scene, s);
     fresh.renderFrame(moved);
@@ -167,11 +159,10 @@ TEST(ConeCarry, AtRestTheAverageIsAFreshFramesAverage) {
     auto context = gl::createContext(gl::defaultBackend());
     const Scene scene = makeCornellBox();
     const Camera moved = turned(scene.cameras[0], 0.05);
-    Renderer carrying(scene, cornellSettings());
-    carrying.renderFrame(scene.cameras[0]);
-    carrying.renderFrame(moved);
+    Renderer carrying(scene, test::cornellIrradianceSettings());
+    renderMove(carrying, scene, moved);
     EXPECT_GT(carrying.statistics().cones.carriedPixels, 0u);
-    Renderer fresh(scene, cornellSettings());
+    Renderer fresh(scene, test::cornellIrradianceSettings());
     fresh.renderFrame(moved);
     EXPECT_FALSE(carrying.readHdr().rgba == fresh.readHdr().rgba);
     for (int sample = 1; sample < 4; ++sample) {

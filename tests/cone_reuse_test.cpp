@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "cornell_irradiance.hpp"
 #include "gl/context.hpp"
 #include "metrics/image_metrics.hpp"
 #include "metrics/region_ratio.hpp"
@@ -21,15 +22,8 @@ namespace {
 // Cornell's irradiance (AOV indirect) at 160×120 in 2×2 blocks, 128³, without the edge-aware
 // filter, so that what the cones gathered is what is measured.
 ImageF cornellIrradiance(const Scene& scene, int rays, float reuseVoxels) {
-    RenderSettings s;
-    s.width = 160;
-    s.height = 120;
-    s.voxelLevels = 7;
-    s.lightViewResolution = 1024;
-    s.display.aov = Aov::Indirect;
-    s.giResolution = GiResolution::Half;
+    RenderSettings s = test::cornellIrradianceSettings(rays);
     s.giFilter = 0.0f;
-    s.cones.rays = rays;
     s.cones.reuseVoxels = reuseVoxels;
     Renderer renderer(scene, s);
     renderer.renderFrame(scene.cameras[0]);
