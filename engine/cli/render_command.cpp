@@ -32,6 +32,7 @@ struct RenderOptions {
     bool finishEachPass = false;
     std::string lightPath;
     std::string cameraPath;
+    double cameraStep = 0.05;  // radians per frame of the camera's orbit
     RenderSettingsOptions render;  // shared with `vct view`
     std::optional<double> memoryBudgetMiB;
 };
@@ -64,6 +65,8 @@ void run(const RenderOptions& o) {
         fail("unknown --light-path '", o.lightPath, "'; the only path is orbit");
     if (!o.cameraPath.empty() && o.cameraPath != "orbit")
         fail("unknown --camera-path '", o.cameraPath, "'; the only path is orbit");
+    if (!(o.cameraStep > 0.0 && o.cameraStep <= 1.0))
+        fail("--camera-step ", o.cameraStep, " is out of range; use radians per frame in (0, 1]");
     // Bad names and values fail here, before the scene loads.
     RenderSettings settings = renderSettingsFromOptions(o.render, Scene{});
     settings.width = o.width;
@@ -90,7 +93,7 @@ void run(const RenderOptions& o) {
         if (!o.lightPath.empty() && frame > 0) renderer.setLights(orbit(startLights, scene, double(frame) / o.frames));
         if (!o.cameraPath.empty() && frame > 0) {
             // A small turn of the eye around the target's vertical axis: a typical interactive move.
-            const double angle = 0.05 * frame;
+            const double angle = o.cameraStep * frame;
             const glm::dvec3 d = camera.eye - camera.target;
             view.eye = camera.target + glm::dvec3(std::cos(angle) * d.x + std::sin(angle) * d.z, d.y,
                                                   -std::sin(angle) * d.x + std::cos(angle) * d.z);
@@ -160,8 +163,12 @@ Run addRenderCommand(CLI::App& app) {
                       "like llvmpipe otherwise let one pass's work spill into the next one's time); frames get "
                       "slower");
     command->add_option("--camera-path", o.cameraPath,
-                        "orbit: the eye turns around the target, 0.05 rad per frame (only camera-dependent "
-                        "passes re-run)");
+                        "orbit: the eye turns around the target, --camera-step radians per frame (only "
+                        "camera-dependent passes re-run)");
+    command->add_option("--camera-step", o.cameraStep,
+                        "radians the --camera-path orbit turns per frame (0 < step <= 1; the default turns the eye "
+                        "about a metre a frame on Sponza: the target lies half the scene's diagonal ahead)")
+        ->capture_default_str();
     command->add_option("--light-path", o.lightPath,
                         "orbit: the lights turn once around the vertical axis over --frames frames (the octree is "
                         "reused; only light-dependent passes re-run)");
