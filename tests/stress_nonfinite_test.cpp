@@ -174,6 +174,8 @@ TEST(StressNonFinite, LightAndCameraValuesOnTheCommandLineAreRefused) {
         {"--cone-step inf", "--cone-step"},          {"--cone-offset nan", "--cone-offset"},
         {"--cone-lift nan", "--cone-lift"},          {"--cone-lift inf", "--cone-lift"},
         {"--cone-reuse nan", "--cone-reuse"},        {"--cone-reuse -1", "--cone-reuse"},
+        {"--cone-carry nan", "--cone-carry"},        {"--cone-carry -1", "--cone-carry"},
+        {"--camera-step nan", "--camera-step"},      {"--camera-step 0", "--camera-step"},
     };
     for (const auto& [options, mentions] : cases) expectRefused(options, mentions, dir);
     std::printf("[ nonfinite] %zu non-finite or out-of-range light, camera and display values on the command line: "
