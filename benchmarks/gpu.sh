@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # The engine on a GPU, in one command: build, run the whole test suite on the EGL backend, then
-# warm the GPU up, time Sponza pass by pass in four scenarios (a full frame, the same with every
-# pass finished before the next, a frame after the light moved, a frame after the camera moved) at
-# 256³ and 512³, and write the table with the GL renderer's name.
+# warm the GPU up, time Sponza pass by pass in five scenarios (a full frame, the same with every
+# pass finished before the next, a frame after the light moved, a frame after one step of the
+# camera, the tenth frame of a camera moving in small steps) at 256³ and 512³, and write the table
+# with the GL renderer's name.
 #
 #   bash benchmarks/gpu.sh              1920x1080, voxel levels 8 and 9 (on a GPU)
 #   bash benchmarks/gpu.sh --small      320x180, voxel levels 6 and 7: the same steps, minutes on llvmpipe
@@ -51,18 +52,21 @@ echo "gpu.sh: warming the GPU up (Sponza, 20 full frames)..." >&2
 # full_finished: the full frame again with glFinish after every pass, so that each pass's time is
 # its own (without it a pass's time can hold the tail of the one before); its total is not a
 # frame's, the others' are.
+# camera_moving: the tenth frame of an orbit of 0.01 rad a frame, where the indirect light carried
+# over camera moves (--cone-carry) has settled; camera_moved is one 0.05-rad step from a fresh frame.
 declare -A scenario_options=(
-    [full]="--full-frames"
-    [full_finished]="--full-frames --finish-each-pass"
-    [light_moved]="--light-path orbit"
-    [camera_moved]="--camera-path orbit"
+    [full]="--frames 2 --full-frames"
+    [full_finished]="--frames 2 --full-frames --finish-each-pass"
+    [light_moved]="--frames 2 --light-path orbit"
+    [camera_moved]="--frames 2 --camera-path orbit"
+    [camera_moving]="--frames 10 --camera-path orbit --camera-step 0.01"
 )
-scenarios=(full full_finished light_moved camera_moved)
+scenarios=(full full_finished light_moved camera_moved camera_moving)
 for level in "${levels[@]}"; do
     for scenario in "${scenarios[@]}"; do
         echo "gpu.sh: Sponza ${width}x${height}, 2^$level voxels, $scenario..." >&2
         # shellcheck disable=SC2086
-        ./build/vct render -q --scene sponza --voxel-levels "$level" --width "$width" --height "$height" --frames 2 \
+        ./build/vct render -q --scene sponza --voxel-levels "$level" --width "$width" --height "$height" \
             ${scenario_options[$scenario]} --out "$scratch/$scenario.png" --timings "$scratch/${scenario}_L$level.json"
     done
 done
@@ -92,7 +96,8 @@ table="$out/gpu_${label}.md"
     echo
     echo "Written by \`benchmarks/gpu.sh$([ "$width" = 1920 ] || echo ' --small')\` on $(date -u +%Y-%m-%d) ($VCT_BACKEND backend)."
     echo "Sponza ${width}x${height}, the second frame of each scenario (the first builds everything; a"
-    echo "full frame re-runs every pass as if the geometry changed; full_finished is the same frame with"
+    echo "full frame re-runs every pass as if the geometry changed; camera_moving is the tenth frame of"
+    echo "0.01-rad steps of the camera instead; full_finished is the same frame as full with"
     echo "glFinish after every pass, whose per-pass times are each pass's own but whose total is not a"
     echo "frame's). GPU milliseconds per pass from timer queries; a pass the scenario does not need is"
     echo "skipped (blank). Test suite: $tests_line."
