@@ -19,6 +19,9 @@ layout(binding = TEXTURE_GBUFFER_POSITION) uniform sampler2D uPosition;
 layout(std430, binding = SSBO_TRACE_CELLS) writeonly buffer TraceCells { uint traceCells[]; };
 layout(rgba32f, binding = IMAGE_INDIRECT) uniform writeonly image2D uTraced;
 layout(r32ui, binding = IMAGE_TRACED_PIXEL) uniform writeonly uimage2D uTracedPixel;
+// For each pixel that sees a surface, in a frame that carries light: the last frame's pixel it takes
+// its light from (packTracedPixel), or NO_TRACED_PIXEL; cone_upsample.comp reads it.
+layout(r32ui, binding = IMAGE_CARRIED_FROM) uniform writeonly uimage2D uCarriedFrom;
 
 uniform int uDownscale;
 
@@ -27,7 +30,7 @@ uniform int uDownscale;
 
 // The pixel of `cell`'s block, first in the turning order, that takes the last frame's light and
 // the last frame's pixel it takes it from (x < 0: none); how many of the block's pixels that see a
-// surface do not take it.
+// surface do not take it. Records for each of them where it takes its light from.
 ivec2 carriedPixelOfBlock(ivec2 cell, out ivec2 from, out int uncarried) {
     const ivec2 size = textureSize(uPosition, 0);
     ivec2 first = ivec2(-1);
@@ -39,6 +42,7 @@ ivec2 carriedPixelOfBlock(ivec2 cell, out ivec2 from, out int uncarried) {
         const vec4 position = texelFetch(uPosition, pixel, 0);
         if (!(position.w > 0.0)) continue;
         const ivec2 carried = carriedPixelFor(position.xyz, normalize(texelFetch(uNormal, pixel, 0).xyz));
+        imageStore(uCarriedFrom, pixel, uvec4(carried.x < 0 ? NO_TRACED_PIXEL : packTracedPixel(carried)));
         if (carried.x < 0) {
             ++uncarried;
         } else if (first.x < 0) {

@@ -41,9 +41,10 @@ void main() {
 }
 #else
 // Before any of that, a pixel that the last frame's light serves (pixel_carry.glsl: only the camera
-// moved, and a pixel of the last frame saw this surface point) takes it. Every pixel records the
-// point its light belongs to and its normal, for the next frame.
+// moved, and a pixel of the last frame saw this surface point; cone_carry.comp found which) takes
+// it. Every pixel records the point its light belongs to and its normal, for the next frame.
 #include "pixel_carry.glsl"
+layout(binding = TEXTURE_CARRIED_FROM) uniform usampler2D uCarriedFrom;
 layout(rgba32f, binding = IMAGE_PIXEL_AT) uniform writeonly image2D uPixelAt;
 layout(rgba8_snorm, binding = IMAGE_PIXEL_NORMAL) uniform writeonly image2D uPixelNormal;
 
@@ -91,8 +92,9 @@ void main() {
         return;
     }
     const vec3 normal = normalize(texelFetch(uNormal, pixel, 0).xyz);
-    const ivec2 carried = carriedPixelFor(position.xyz, normal);
-    if (carried.x >= 0) {
+    const uint carriedFrom = uCarry != 0 ? texelFetch(uCarriedFrom, pixel, 0).r : NO_TRACED_PIXEL;
+    if (carriedFrom != NO_TRACED_PIXEL) {
+        const ivec2 carried = unpackTracedPixel(carriedFrom);
         imageStore(uIndirect, pixel, texelFetch(uCarriedIrradiance, carried, 0));
         imageStore(uPixelAt, pixel, texelFetch(uCarriedAt, carried, 0) + vec4(0.0, 0.0, 0.0, 1.0));  // a frame older
         imageStore(uPixelNormal, pixel, texelFetch(uCarriedNormal, carried, 0));

@@ -63,6 +63,7 @@
     X(IMAGE_TRACED_PIXEL, 1)         /* cone_carry in blocks: the pixel each block traced */ \
     X(IMAGE_PIXEL_AT, 3)             /* cone_upsample: the point each pixel's light belongs to */ \
     X(IMAGE_PIXEL_NORMAL, 4)         /* and its normal */                                         \
+    X(IMAGE_CARRIED_FROM, 5)         /* cone_carry: the last frame's pixel each pixel takes light from */ \
     X(IMAGE_VOXEL_VIEW, 0)                                                                        \
     X(IMAGE_HDR, 0)                                                                               \
     X(IMAGE_LDR, 1)                                                                               \
@@ -84,6 +85,7 @@
     X(TEXTURE_CARRIED_AT, 8)         /* pixel_carry.glsl: the last frame's IMAGE_PIXEL_AT */      \
     X(TEXTURE_CARRIED_NORMAL, 9)     /* and IMAGE_PIXEL_NORMAL */                                 \
     X(TEXTURE_CARRIED_IRRADIANCE, 10) /* and its indirect irradiance */                           \
+    X(TEXTURE_CARRIED_FROM, 11)      /* cone_upsample: IMAGE_CARRIED_FROM */                        \
     X(TEXTURE_TRACED_IRRADIANCE, 12) /* cone_upsample, indirect_filter: what the cones gathered */ \
     X(TEXTURE_TRACED_PIXEL, 13)      /* cone_upsample, indirect_filter: the pixel each block traced */ \
     X(TEXTURE_VIEW_ALBEDO_BRICKS, 1) /* voxel_view: the albedo pool */                     \

@@ -12,11 +12,12 @@ ConeCarry::ConeCarry(int width, int height, int tracedWidth, int tracedHeight)
       carriedAt_(gl::createTexture2D(GL_RGBA32F, width, height, 1, "last frame's points of indirect light")),
       carriedNormal_(gl::createTexture2D(GL_RGBA8_SNORM, width, height, 1, "last frame's normals of indirect light")),
       carriedIrradiance_(gl::createTexture2D(GL_RGBA32F, width, height, 1, "last frame's indirect irradiance")),
+      carriedFrom_(gl::createTexture2D(GL_R32UI, width, height, 1, "pixels the indirect light is carried from")),
       traceCells_(gl::createBuffer(GLsizeiptr(std::size_t(tracedWidth) * tracedHeight * 4), nullptr, 0, "cells to trace")),
       program_(gl::buildProgram({{GL_COMPUTE_SHADER, "cone_carry.comp"}})) {}
 
 std::size_t ConeCarry::bytes() const {
-    return std::size_t(width_) * height_ * (16 + 4 + 16 + 4 + 16) + std::size_t(tracedWidth_) * tracedHeight_ * 4;
+    return std::size_t(width_) * height_ * (16 + 4 + 16 + 4 + 16 + 4) + std::size_t(tracedWidth_) * tracedHeight_ * 4;
 }
 
 void ConeCarry::setCarryUniforms(gl::ComputeCall& call) const {
@@ -51,6 +52,7 @@ void ConeCarry::listCells(const GBuffer& gbuffer, GLuint traced, GLuint tracedPi
         .storage(gl::SSBO_CONE_COUNTERS, counters)
         .image(gl::IMAGE_INDIRECT, traced, GL_WRITE_ONLY, GL_RGBA32F)
         .image(gl::IMAGE_TRACED_PIXEL, tracedPixel, GL_WRITE_ONLY, GL_R32UI)
+        .image(gl::IMAGE_CARRIED_FROM, carriedFrom_.id(), GL_WRITE_ONLY, GL_R32UI)
         .uniform("uDownscale", key.block)
         .uniform("uRotation", rotation)
         .dispatchImage(tracedWidth_, tracedHeight_,
@@ -61,7 +63,8 @@ void ConeCarry::listCells(const GBuffer& gbuffer, GLuint traced, GLuint tracedPi
 
 void ConeCarry::bindCarried(gl::ComputeCall& call) const {
     setCarryUniforms(call);
-    call.image(gl::IMAGE_PIXEL_AT, pixelAt_.id(), GL_WRITE_ONLY, GL_RGBA32F)
+    call.texture(gl::TEXTURE_CARRIED_FROM, carriedFrom_.id())
+        .image(gl::IMAGE_PIXEL_AT, pixelAt_.id(), GL_WRITE_ONLY, GL_RGBA32F)
         .image(gl::IMAGE_PIXEL_NORMAL, pixelNormal_.id(), GL_WRITE_ONLY, GL_RGBA8_SNORM);
 }
 

@@ -77,6 +77,7 @@ private:
 
     int width_, height_, tracedWidth_, tracedHeight_;
     gl::Texture pixelAt_, pixelNormal_;                          // this frame's
+    gl::Texture carriedFrom_;  // the last frame's pixel each pixel takes light from (cone_carry.comp)
     gl::Texture carriedAt_, carriedNormal_, carriedIrradiance_;  // the remembered frame's
     gl::Buffer traceCells_;
     gl::Program program_;

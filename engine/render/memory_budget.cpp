@@ -68,9 +68,9 @@ MemoryEstimate estimate(const Scene& scene, const MemoryRequest& r) {
     MemoryEstimate e;
     // G-buffer 60, direct 16, indirect 16 (and 20 per 2×2 block for cones traced in blocks, 5 per
     // pixel, plus 4 for the list of pixels that trace their own), the light carried over camera
-    // moves 57 (render/cone_carry.hpp: 56, and 1 for its list of cells to trace), composite 36
+    // moves 61 (render/cone_carry.hpp: 60, and 1 for its list of cells to trace), composite 36
     // (average, sum, 8-bit), voxel view 16 bytes per pixel.
-    e.imageTargets = std::size_t(r.width) * std::size_t(r.height) * (60 + 16 + 16 + 5 + 4 + 57 + 36 + 16);
+    e.imageTargets = std::size_t(r.width) * std::size_t(r.height) * (60 + 16 + 16 + 5 + 4 + 61 + 36 + 16);
     // Depth 4, position 16, normal 8, flux 16 bytes per texel, one map per light, and a finer
     // shadow map (depth, 4 bytes per texel) beside each.
     // A point light has six maps (a cube), the others one; its faces' shadow maps are coarser.
