@@ -1,4 +1,5 @@
-// Which pixel of its block a cell of the traced image traces (cone_carry.comp, cone_trace.comp).
+// Which pixel of its block a cell of the traced image traces (cone_carry.comp, which lists it for
+// cone_trace.comp).
 // Requires the includer's uPosition (the G-buffer's positions), uDownscale and uRotation.
 //
 // With uDownscale = 1 every pixel is its own cell. With B = 2 or 4, one pixel of each B×B block is

@@ -9,13 +9,14 @@ layout(local_size_x = 8, local_size_y = 8) in;
 // cell takes the carried light of its first pixel that has it (CARRIED_CELL), so that the cells
 // around it that do trace still find it in their filter and upsampling windows, and its pixels
 // without carried light take theirs from the cells around them, as in any frame (or trace their
-// own). Every other cell that sees a surface traces its block's pixel (block_pixel.glsl) and goes
-// on the list.
+// own). Every other cell that sees a surface goes on the list with the pixel of its block that it
+// traces (block_pixel.glsl).
 #include "traced_pixel.glsl"
 #include "cone_counters.glsl"
 
 layout(binding = TEXTURE_GBUFFER_NORMAL) uniform sampler2D uNormal;
 layout(binding = TEXTURE_GBUFFER_POSITION) uniform sampler2D uPosition;
+// The pixels cone_trace.comp traces, one per listed cell (packTracedPixel).
 layout(std430, binding = SSBO_TRACE_CELLS) writeonly buffer TraceCells { uint traceCells[]; };
 layout(rgba32f, binding = IMAGE_INDIRECT) uniform writeonly image2D uTraced;
 layout(r32ui, binding = IMAGE_TRACED_PIXEL) uniform writeonly uimage2D uTracedPixel;
@@ -77,5 +78,5 @@ void main() {
         return;
     }
     if (uDownscale > 1) imageStore(uTracedPixel, cell, uvec4(packTracedPixel(pixel)));
-    traceCells[atomicAdd(coneCounters[CONE_COUNTER_TRACE_CELLS], 1u)] = packTracedPixel(cell);
+    traceCells[atomicAdd(coneCounters[CONE_COUNTER_TRACE_CELLS], 1u)] = packTracedPixel(pixel);
 }

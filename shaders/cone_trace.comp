@@ -4,28 +4,27 @@ layout(local_size_x = 64, local_size_z = CONE_LANES) in;
 // through the radiance bricks (cone_march.glsl) and add up to the indirect irradiance E.
 // Output: E (rgb) and ambient visibility (a: 1 = nothing in the way).
 //
-// It traces the cells of the traced image that cone_carry.comp listed (those it could not carry
-// over from the last frame), one per invocation: with uDownscale = 1 every pixel is a cell, traced
-// straight into the indirect image; with B = 2 or 4, one pixel of each B×B block (block_pixel.glsl)
-// into an image 1/B the size per side, which cone_upsample.comp spreads over the pixels that share
-// its surface. Listed, every invocation of a SIMD group traces, wherever its cell lies.
+// It traces the cells of the traced image that cone_carry.comp listed (those whose light it could
+// not carry over from the last frame), one per invocation, from the pixel the list names: with
+// uDownscale = 1 every pixel is a cell, traced straight into the indirect image; with B = 2 or 4,
+// one pixel of each B×B block (block_pixel.glsl) into an image 1/B the size per side, which
+// cone_upsample.comp spreads over the pixels that share its surface. Listed, every invocation of a
+// SIMD group traces, wherever its cell lies.
 // The work group's z holds the lanes that share each pixel's cones (cone_lanes.glsl).
 #include "cone_march.glsl"
 #include "cone_trace_common.glsl"
 
 layout(binding = TEXTURE_GBUFFER_NORMAL) uniform sampler2D uNormal;
 layout(binding = TEXTURE_GBUFFER_POSITION) uniform sampler2D uPosition;
-// The cells to trace (packTracedPixel), their count in coneCounters (cone_carry.comp).
+// The pixels to trace (packTracedPixel), one per listed cell, their count in coneCounters.
 layout(std430, binding = SSBO_TRACE_CELLS) readonly buffer TraceCells { uint traceCells[]; };
-
-#include "block_pixel.glsl"
 
 void main() {
     const uint listed = linearInvocation();
     const bool traces = listed < coneCounters[CONE_COUNTER_TRACE_CELLS];
-    const ivec2 cell = traces ? unpackTracedPixel(traceCells[listed]) : ivec2(0);
-    vec4 position;
-    const ivec2 pixel = traces ? tracedPixelOfCell(cell, position) : ivec2(0);
+    const ivec2 pixel = traces ? unpackTracedPixel(traceCells[listed]) : ivec2(0);
+    const ivec2 cell = pixel / uDownscale;
+    const vec4 position = traces ? texelFetch(uPosition, pixel, 0) : vec4(0.0);
 #ifdef STORE_CONE_SAMPLES
     if (traces) coneSampleCell = cell;
 #endif

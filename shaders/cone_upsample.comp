@@ -43,7 +43,7 @@ void main() {
 // Before any of that, a pixel that the last frame's light serves (pixel_carry.glsl: only the camera
 // moved, and a pixel of the last frame saw this surface point; cone_carry.comp found which) takes
 // it. Every pixel records the point its light belongs to and its normal, for the next frame.
-#include "pixel_carry.glsl"
+#include "carried_light.glsl"
 layout(binding = TEXTURE_CARRIED_FROM) uniform usampler2D uCarriedFrom;
 layout(rgba32f, binding = IMAGE_PIXEL_AT) uniform writeonly image2D uPixelAt;
 layout(rgba8_snorm, binding = IMAGE_PIXEL_NORMAL) uniform writeonly image2D uPixelNormal;

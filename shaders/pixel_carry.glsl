@@ -1,6 +1,6 @@
 // Indirect light carried over camera moves (render/cone_carry.hpp): which pixel of the last frame's
-// indirect image serves a pixel of this one (cone_carry.comp decides from it which cells to trace,
-// cone_upsample.comp takes the light). Requires the includer's uPosition (the G-buffer's positions).
+// indirect image serves a pixel of this one (cone_carry.comp finds it for every pixel, decides
+// from it which cells to trace and records it for cone_upsample.comp, which takes the light).
 //
 // The irradiance a surface point receives does not depend on the camera. A pixel of the last frame
 // serves a pixel of this one when the point its light was estimated at lies on the surface this
@@ -10,13 +10,8 @@
 // keeps the point it was estimated at, so it never stands for light farther than that from where
 // it was estimated, and it is carried for at most a few frames (carryFramesAt).
 
-// The last frame's pixels: the point each one's light belongs to (xyz scene-local; w = 1 + the
-// frames it has been carried, 0: none), its unit normal, and its indirect irradiance and visibility.
-layout(binding = TEXTURE_CARRIED_AT) uniform sampler2D uCarriedAt;
-layout(binding = TEXTURE_CARRIED_NORMAL) uniform sampler2D uCarriedNormal;
-layout(binding = TEXTURE_CARRIED_IRRADIANCE) uniform sampler2D uCarriedIrradiance;
+#include "carried_light.glsl"
 
-uniform int uCarry;                   // 0: nothing is carried (another scene, a later sample)
 uniform mat4 uCarriedViewProjection;  // the last frame's camera
 uniform mat4 uViewProjection;         // this frame's
 uniform vec3 uEye;                    // this frame's, scene-local
@@ -54,6 +49,7 @@ ivec2 carriedPixelFor(vec3 position, vec3 normal) {
     const float slant = max(abs(dot(normal, normalize(uEye - position))), 0.25);
     const float reach = uCarryVoxels + depth * uPixelAngle / slant * uCarryScale;
     ivec2 best = ivec2(-1);
+    vec4 bestAt = vec4(0.0);
     float bestDistance = reach;
     for (int dy = -1; dy <= 1; ++dy)
         for (int dx = -1; dx <= 1; ++dx) {
@@ -68,11 +64,11 @@ ivec2 carriedPixelFor(vec3 position, vec3 normal) {
             if (abs(dot(offset, fromNormal)) <= kCarryPlaneVoxels && distance <= bestDistance) {
                 bestDistance = distance;
                 best = from;
+                bestAt = at;
             }
         }
     // Light carried as long as its point allows is estimated anew, even where a neighbour's could
     // stand in for it: otherwise the neighbours' light would go on in its place.
-    if (best.x >= 0 && texelFetch(uCarriedAt, best, 0).w > float(carryFramesAt(texelFetch(uCarriedAt, best, 0).xyz)))
-        return ivec2(-1);
+    if (best.x >= 0 && bestAt.w > float(carryFramesAt(bestAt.xyz))) return ivec2(-1);
     return best;
 }

@@ -13,40 +13,38 @@ ConeCarry::ConeCarry(int width, int height, int tracedWidth, int tracedHeight)
       carriedNormal_(gl::createTexture2D(GL_RGBA8_SNORM, width, height, 1, "last frame's normals of indirect light")),
       carriedIrradiance_(gl::createTexture2D(GL_RGBA32F, width, height, 1, "last frame's indirect irradiance")),
       carriedFrom_(gl::createTexture2D(GL_R32UI, width, height, 1, "pixels the indirect light is carried from")),
-      traceCells_(gl::createBuffer(GLsizeiptr(std::size_t(tracedWidth) * tracedHeight * 4), nullptr, 0, "cells to trace")),
+      traceCells_(gl::createBuffer(GLsizeiptr(std::size_t(tracedWidth) * tracedHeight * 4), nullptr, 0, "pixels the listed cells trace")),
       program_(gl::buildProgram({{GL_COMPUTE_SHADER, "cone_carry.comp"}})) {}
 
 std::size_t ConeCarry::bytes() const {
     return std::size_t(width_) * height_ * (16 + 4 + 16 + 4 + 16 + 4) + std::size_t(tracedWidth_) * tracedHeight_ * 4;
 }
 
-void ConeCarry::setCarryUniforms(gl::ComputeCall& call) const {
+void ConeCarry::bindCarriedLight(gl::ComputeCall& call) const {
     call.texture(gl::TEXTURE_CARRIED_AT, carriedAt_.id())
         .texture(gl::TEXTURE_CARRIED_NORMAL, carriedNormal_.id())
         .texture(gl::TEXTURE_CARRIED_IRRADIANCE, carriedIrradiance_.id())
-        .uniform("uCarry", carries_ ? 1 : 0)
-        .uniform("uCarriedViewProjection", rememberedViewProjection_)
-        .uniform("uViewProjection", view_.viewProjection)
-        .uniform("uEye", view_.eye)
-        // A pixel spans 2 / (P[1][1] · height) per unit of distance in a perspective projection.
-        .uniform("uPixelAngle", 2.0f / (view_.projection[1][1] * float(view_.height)))
-        .uniform("uCarryVoxels", maxVoxels_)
-        .uniform("uCarryCos", kConeCarryCos)
-        .uniform("uCarryScale", voxelScale_)
-        .uniform("uCarryFrames", kConeCarryFrames);
+        .uniform("uCarry", carries_ ? 1 : 0);
 }
 
 void ConeCarry::listCells(const GBuffer& gbuffer, GLuint traced, GLuint tracedPixel, const gl::Buffer& counters,
                           const ConeCarryKey& key, const ViewTransform& view, int rotation, double voxelSize,
                           float maxVoxels) {
     key_ = key;
-    view_ = view;
-    voxelScale_ = float(1.0 / voxelSize);
-    maxVoxels_ = maxVoxels;
+    viewProjection_ = view.viewProjection;
     carries_ = remembered_ && key == rememberedKey_ && maxVoxels > 0.0f && key.block > 1;
     gl::ComputeCall call(program_);
-    setCarryUniforms(call);
-    call.texture(gl::TEXTURE_GBUFFER_NORMAL, gbuffer.normal())
+    bindCarriedLight(call);
+    call.uniform("uCarriedViewProjection", rememberedViewProjection_)
+        .uniform("uViewProjection", view.viewProjection)
+        .uniform("uEye", view.eye)
+        // A pixel spans 2 / (P[1][1] · height) per unit of distance in a perspective projection.
+        .uniform("uPixelAngle", 2.0f / (view.projection[1][1] * float(view.height)))
+        .uniform("uCarryVoxels", maxVoxels)
+        .uniform("uCarryCos", kConeCarryCos)
+        .uniform("uCarryScale", float(1.0 / voxelSize))
+        .uniform("uCarryFrames", kConeCarryFrames)
+        .texture(gl::TEXTURE_GBUFFER_NORMAL, gbuffer.normal())
         .texture(gl::TEXTURE_GBUFFER_POSITION, gbuffer.position())
         .storage(gl::SSBO_TRACE_CELLS, traceCells_)
         .storage(gl::SSBO_CONE_COUNTERS, counters)
@@ -62,7 +60,7 @@ void ConeCarry::listCells(const GBuffer& gbuffer, GLuint traced, GLuint tracedPi
 }
 
 void ConeCarry::bindCarried(gl::ComputeCall& call) const {
-    setCarryUniforms(call);
+    bindCarriedLight(call);
     call.texture(gl::TEXTURE_CARRIED_FROM, carriedFrom_.id())
         .image(gl::IMAGE_PIXEL_AT, pixelAt_.id(), GL_WRITE_ONLY, GL_RGBA32F)
         .image(gl::IMAGE_PIXEL_NORMAL, pixelNormal_.id(), GL_WRITE_ONLY, GL_RGBA8_SNORM);
@@ -79,7 +77,7 @@ void ConeCarry::remember(GLuint indirect) {
     copy(indirect, carriedIrradiance_);
     remembered_ = true;
     rememberedKey_ = key_;
-    rememberedViewProjection_ = view_.viewProjection;
+    rememberedViewProjection_ = viewProjection_;
     gl::checkErrors("keeping the indirect light for the next frame");
 }
 

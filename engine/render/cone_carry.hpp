@@ -53,19 +53,22 @@ public:
     // The image's size and the traced image's (one cell per block).
     ConeCarry(int width, int height, int tracedWidth, int tracedHeight);
 
-    // Lists the cells of the traced image that trace cones this frame (SSBO_TRACE_CELLS, its length
-    // in `counters`) and writes the others into `traced` (RGBA32F) and `tracedPixel` (in blocks; 0:
-    // every pixel a cell) as cells without a traced pixel. The last remembered frame's light is
-    // carried when `key` is its key and `maxVoxels` > 0 (in blocks only). `rotation` turns which
-    // pixel of a block traces (the pixel sample).
+    // Lists the cells of the traced image that trace cones this frame, by the pixel each traces
+    // (SSBO_TRACE_CELLS, its length in `counters`), and writes every cell's pixel to `tracedPixel`
+    // (in blocks; 0: every pixel a cell) and the others into `traced` (RGBA32F): sky, or the
+    // carried light of their pixel (CARRIED_CELL). The last remembered frame's light is carried
+    // when `key` is its key and `maxVoxels` > 0 (in blocks only). `rotation` turns which pixel of
+    // a block traces (the pixel sample).
     void listCells(const GBuffer& gbuffer, GLuint traced, GLuint tracedPixel, const gl::Buffer& counters,
                    const ConeCarryKey& key, const ViewTransform& view, int rotation, double voxelSize, float maxVoxels);
-    // Binds what cone_upsample.comp reads and writes for the carried light (pixel_carry.glsl).
+    // Binds what cone_upsample.comp reads and writes for the carried light (carried_light.glsl, and
+    // the pixel each pixel takes it from, which listCells found).
     void bindCarried(gl::ComputeCall& call) const;
     // Keeps this frame's indirect image, and the points and normals its pixels' light belongs to,
     // for the next frame (after cone_upsample.comp and the pixels' own traces).
     void remember(GLuint indirect);
 
+    // The pixels cone_trace.comp traces, one per listed cell (its length in the counters).
     const gl::Buffer& traceCells() const { return traceCells_; }
     bool carries() const { return carries_; }
     int tracedWidth() const { return tracedWidth_; }
@@ -73,19 +76,18 @@ public:
     std::size_t bytes() const;
 
 private:
-    void setCarryUniforms(gl::ComputeCall& call) const;
+    // The last frame's light as shaders/carried_light.glsl reads it.
+    void bindCarriedLight(gl::ComputeCall& call) const;
 
     int width_, height_, tracedWidth_, tracedHeight_;
     gl::Texture pixelAt_, pixelNormal_;                          // this frame's
-    gl::Texture carriedFrom_;  // the last frame's pixel each pixel takes light from (cone_carry.comp)
     gl::Texture carriedAt_, carriedNormal_, carriedIrradiance_;  // the remembered frame's
+    gl::Texture carriedFrom_;  // the last frame's pixel each pixel takes light from (cone_carry.comp)
     gl::Buffer traceCells_;
     gl::Program program_;
     bool remembered_ = false, carries_ = false;
     ConeCarryKey rememberedKey_, key_;
-    glm::mat4 rememberedViewProjection_{1.0f};
-    ViewTransform view_;
-    float voxelScale_ = 1.0f, maxVoxels_ = 0.0f;
+    glm::mat4 rememberedViewProjection_{1.0f}, viewProjection_{1.0f};
 };
 
 }  // namespace vct

@@ -16,7 +16,8 @@ ConeTrace::ConeTrace(int width, int height)
     : width_(width),
       height_(height),
       indirect_(gl::createTexture2D(GL_RGBA32F, width, height, 1, "indirect irradiance")),
-      counters_(gl::createBuffer(4 * gl::CONE_COUNTER_WORDS, nullptr, GL_DYNAMIC_STORAGE_BIT, "cone counters")) {}
+      counters_(gl::createBuffer(4 * gl::CONE_COUNTER_WORDS, nullptr, GL_DYNAMIC_STORAGE_BIT, "cone counters")),
+      traceArgs_(gl::createBuffer(12, nullptr, 0, "traced cells' dispatch arguments")) {}
 
 int coneLanes(const ConeSettings& settings) {
     const int cones = settings.rays > 0 ? std::min(settings.rays, kNarrowConesPerDispatch) : int(makeConeSet(settings.cones).size());
@@ -200,11 +201,9 @@ void ConeTrace::render(const GBuffer& gbuffer, const Octree& octree, const Radia
         tracedBlock_ = block;
     }
     const int lanes = coneLanes(settings);
-    if (!tracePrograms_[lanes].id()) {
+    if (!tracePrograms_[lanes].id())
         tracePrograms_[lanes] =
             gl::buildProgram({{GL_COMPUTE_SHADER, "cone_trace.comp"}}, {coneLanesDefine(lanes), "STORE_CONE_SAMPLES 1"});
-        if (!traceArgs_.id()) traceArgs_ = gl::createBuffer(12, nullptr, 0, "traced cells' dispatch arguments");
-    }
     if (inBlocks && !traceListedPrograms_[lanes].id())
         traceListedPrograms_[lanes] =
             gl::buildProgram({{GL_COMPUTE_SHADER, "cone_upsample.comp"}}, {"TRACE_LISTED 1", coneLanesDefine(lanes)});
@@ -249,17 +248,15 @@ void ConeTrace::render(const GBuffer& gbuffer, const Octree& octree, const Radia
     const GLuint tracedImage = inBlocks ? traced_.id() : indirect_.id();
     if (!carry_ || carry_->tracedWidth() != tracedWidth || carry_->tracedHeight() != tracedHeight)
         carry_ = std::make_unique<ConeCarry>(width_, height_, tracedWidth, tracedHeight);
-    const int rotation = sample & (block * block - 1);
     carry_->listCells(gbuffer, tracedImage, inBlocks ? tracedPixel_.id() : 0, counters_, {block, sceneVersion}, view,
-                      rotation, octree.grid.voxelSize, sample == 0 ? settings.carryVoxels : 0.0f);
+                      sample & (block * block - 1), octree.grid.voxelSize, sample == 0 ? settings.carryVoxels : 0.0f);
     for (int batch = 0; batch < rayBatches; ++batch) {
         gl::ComputeCall call = tracingCall(tracePrograms_[lanes]);
         selectBatch(call, batch);
         call.uniform("uStoreConeSamples", reuse ? 1 : 0).uniform("uConeSampleRowLength", tracedWidth);
         if (reuse) call.storage(gl::SSBO_CONE_SAMPLES, reuse_->cones());
         call.storage(gl::SSBO_TRACE_CELLS, carry_->traceCells())
-            .image(gl::IMAGE_INDIRECT, tracedImage, GL_READ_WRITE, GL_RGBA32F)
-            .uniform("uRotation", rotation);
+            .image(gl::IMAGE_INDIRECT, tracedImage, GL_READ_WRITE, GL_RGBA32F);
         listDispatch_.dispatch(call, counters_, gl::TRACE_CELL_COUNT_SLOT, traceArgs_, 0,
                                GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT |
                                    GL_SHADER_STORAGE_BARRIER_BIT);
