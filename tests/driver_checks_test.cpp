@@ -1,6 +1,6 @@
 // The driver checks (engine/gl/driver_checks.hpp) on a frame that runs every pass: the octree
 // build, photons, two bounces and the cone trace, then a second frame after the light moved,
-// which reuses the first frame's buffers. Neither switch may change a bit of the image. Poisoned
+// which reuses the first frame's buffers. No switch may change a bit of the image. Poisoned
 // buffers and textures that changed it would mean a pass reads storage nobody wrote, which
 // llvmpipe's zeroed allocations hide and a GPU's leftovers do not; all barriers that changed it
 // would mean a pass asks for too few barrier bits (on llvmpipe, which finishes each dispatch
@@ -35,6 +35,7 @@ TEST(DriverChecks, PoisonedBuffersAndFullBarriersChangeNoBit) {
     ASSERT_GT(plain.size(), 48u * 36u * 12u);
     EXPECT_EQ(renderBytes(dir, "poisoned", "VCT_GL_POISON=1"), plain) << "a pass reads a buffer nobody wrote";
     EXPECT_EQ(renderBytes(dir, "barriers", "VCT_GL_ALL_BARRIERS=1"), plain) << "a pass asks for too few barrier bits";
+    EXPECT_EQ(renderBytes(dir, "finished", "VCT_GL_FINISH=1"), plain) << "two dispatches must not overlap";
 }
 
 TEST(DriverChecks, RebuildsThatKeepTheirStorageWriteAllOfIt) {
@@ -59,9 +60,9 @@ TEST(DriverChecks, EveryNodeGroupSizeGivesTheSameBits) {
 }
 
 TEST(DriverChecks, EveryConeLaneCountGivesTheSameBits) {
-    // An apex's cones are traced by one invocation on llvmpipe and by one invocation per cone on a
-    // GPU (cone_trace.cpp, coneLanes), whose parts the work group adds: the GPU's choice must give
-    // this machine's image, bit for bit, for the frame's four narrow cones, for six (two
+    // An apex's cones are traced by one invocation, or with VCT_CONE_LANES=cones by one invocation
+    // per cone (cone_trace.cpp, coneLanes), whose parts the work group adds: lanes must give one
+    // invocation's image, bit for bit, for the frame's four narrow cones, for six (two
     // dispatches, the second with idle lanes), for the one cone of each later sample and for the
     // cone set, each frame with a second bounce, whose voxels gather with the cone set.
     const auto dir = vct::test::testDir();

@@ -13,7 +13,9 @@ bool switchedOn(const char* name) {
 
 void memoryBarrier(GLbitfield barriers) {
     static const bool all = switchedOn("VCT_GL_ALL_BARRIERS");
+    static const bool finish = switchedOn("VCT_GL_FINISH");
     glMemoryBarrier(all ? GL_ALL_BARRIER_BITS : barriers);
+    if (finish) glFinish();
 }
 
 bool poisonNewStorage() {
