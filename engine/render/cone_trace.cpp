@@ -21,7 +21,7 @@ ConeTrace::ConeTrace(int width, int height)
 
 int coneLanes(const ConeSettings& settings) {
     const int cones = settings.rays > 0 ? std::min(settings.rays, kNarrowConesPerDispatch) : int(makeConeSet(settings.cones).size());
-    bool perCone = !gl::cpuRasterizer();
+    bool perCone = false;
     if (const char* forced = std::getenv("VCT_CONE_LANES"); forced && *forced) {
         const std::string value = forced;
         if (value != "1" && value != "cones")

@@ -151,13 +151,15 @@ void setConeMarchUniforms(gl::ComputeCall& call, const Octree& octree, const Rad
                           const ConeSettings& settings);
 
 // How many invocations share one apex's cones, each tracing every n-th (shaders/cone_lanes.glsl,
-// CONE_LANES): on a GPU one per cone (the narrow cones of a dispatch, or the cone set's cones), so
-// that the few apexes that trace (a frame's one pixel per block, a bounce's gathering voxels) keep
-// enough invocations in flight; on a CPU rasterizer one, whose invocations already outnumber its
-// cores. Sets of more than kMaxConeLanes cones keep one lane. VCT_CONE_LANES forces one lane ("1")
-// or one per cone ("cones"), so that the GPU's choice is checked on any machine: both give the same
-// bits, as each lane then traces at most one cone of a dispatch (with two lanes for four cones,
-// each lane's two would add up before the lanes do, in another order).
+// CONE_LANES). One per cone (the narrow cones of a dispatch, or the cone set's cones) keeps more
+// invocations in flight where few apexes trace (a frame's one pixel per block, a bounce's
+// gathering voxels), which made cone_trace twice as fast on an H200; but there the group's sum of
+// the lanes' parts came out wrong, and different from run to run, with narrow cones
+// (docs/benchmark.md, "Cone lanes on the H200"), so every device keeps one lane until that is
+// understood. VCT_CONE_LANES forces one lane ("1") or one per cone ("cones"), so that both are
+// checked on any machine: both must give the same bits, as each lane then traces at most one cone
+// of a dispatch (with two lanes for four cones, each lane's two would add up before the lanes do,
+// in another order). Sets of more than kMaxConeLanes cones keep one lane.
 constexpr int kMaxConeLanes = 9;
 int coneLanes(const ConeSettings& settings);
 // The shader define that builds a tracing program for `lanes` lanes.
