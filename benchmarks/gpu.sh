@@ -62,20 +62,35 @@ declare -A scenario_options=(
     [camera_moving]="--frames 10 --camera-path orbit --camera-step 0.01"
 )
 scenarios=(full full_finished light_moved camera_moved camera_moving)
+# A scenario that fails (vct refuses an image with non-finite values, say) leaves its column blank
+# and is named under the table; the others are still measured, and the script exits non-zero.
+failures=()
 for level in "${levels[@]}"; do
     for scenario in "${scenarios[@]}"; do
         echo "gpu.sh: Sponza ${width}x${height}, 2^$level voxels, $scenario..." >&2
         # shellcheck disable=SC2086
-        ./build/vct render -q --scene sponza --voxel-levels "$level" --width "$width" --height "$height" \
-            ${scenario_options[$scenario]} --out "$scratch/$scenario.png" --timings "$scratch/${scenario}_L$level.json"
+        if ! ./build/vct render -q --scene sponza --voxel-levels "$level" --width "$width" --height "$height" \
+            ${scenario_options[$scenario]} --out "$scratch/$scenario.png" --timings "$scratch/${scenario}_L$level.json" \
+            2>"$scratch/error.log"; then
+            failures+=("$scenario 2^$level: $(tail -1 "$scratch/error.log")")
+            rm -f "$scratch/${scenario}_L$level.json"
+        fi
+        cat "$scratch/error.log" >&2
     done
 done
+first_json=$(ls "$scratch"/*.json 2>/dev/null | head -1)
+[ -n "$first_json" ] || { echo "gpu.sh: every scenario failed: ${failures[*]}" >&2; exit 1; }
 
 # The GL renderer string names the results: "NVIDIA H100 80GB HBM3/PCIe/SSE2" -> nvidia_h100_80gb_hbm3.
-renderer=$(sed -n 's/^ *"renderer": "\(.*\)",*$/\1/p' "$scratch/full_L${levels[0]}.json" | head -1)
+renderer=$(sed -n 's/^ *"renderer": "\(.*\)",*$/\1/p' "$first_json" | head -1)
 label=$(echo "${renderer%%/*}" | tr 'A-Z' 'a-z' | sed 's/[^a-z0-9]\{1,\}/_/g; s/^_//; s/_$//' | cut -c1-40)
 [ "$width" = 1920 ] || label="${label}_small"
-for json in "$scratch"/*.json; do cp "$json" "$out/gpu_${label}_$(basename "$json")"; done
+for level in "${levels[@]}"; do
+    for scenario in "${scenarios[@]}"; do  # a failed scenario's JSON from an earlier run goes too
+        json="${scenario}_L$level.json"
+        if [ -f "$scratch/$json" ]; then cp "$scratch/$json" "$out/gpu_${label}_$json"; else rm -f "$out/gpu_${label}_$json"; fi
+    done
+done
 
 # Per-pass GPU milliseconds from a timings JSON (pretty-printed, keys sorted: each element of
 # "passes" is cpu_ms, gpu_ms, name), and the frame's total: "name ms" lines, "total ms" last.
@@ -102,7 +117,8 @@ table="$out/gpu_${label}.md"
     echo "frame's). GPU milliseconds per pass from timer queries; a pass the scenario does not need is"
     echo "skipped (blank). Test suite: $tests_line."
     echo
-    passes=$(pass_times "$scratch/full_L${levels[0]}.json" | awk '$1 != "total" { print $1 }')
+    passes=$(for json in "$scratch"/full_L*.json "$first_json"; do if [ -f "$json" ]; then pass_times "$json"; fi; done |
+        awk '$1 != "total" && !seen[$1]++ { print $1 }')
     header="| pass |" rule="|---|"
     for level in "${levels[@]}"; do
         for scenario in "${scenarios[@]}"; do
@@ -116,7 +132,9 @@ table="$out/gpu_${label}.md"
         row="| $pass |"
         for level in "${levels[@]}"; do
             for scenario in "${scenarios[@]}"; do
-                ms=$(pass_times "$scratch/${scenario}_L$level.json" | awk -v p="$pass" '$1 == p { printf "%.3f", $2 }')
+                ms=""
+                [ -f "$scratch/${scenario}_L$level.json" ] &&
+                    ms=$(pass_times "$scratch/${scenario}_L$level.json" | awk -v p="$pass" '$1 == p { printf "%.3f", $2 }')
                 row="$row ${ms} |"
             done
         done
@@ -124,6 +142,12 @@ table="$out/gpu_${label}.md"
     done
     echo
     echo "Timings JSONs: \`gpu_${label}_<scenario>_L<levels>.json\` beside this file."
+    if [ ${#failures[@]} -gt 0 ]; then
+        echo
+        echo "Failed (blank columns):"
+        for failure in "${failures[@]}"; do echo "- $failure"; done
+    fi
 } >"$table"
 echo "gpu.sh: wrote $table" >&2
 cat "$table"
+[ ${#failures[@]} -eq 0 ]
