@@ -2,7 +2,9 @@
 // z (CONE_LANES of them; cone_trace.cpp, coneLanes). Requires cone_march.glsl.
 //
 // Each lane traces every CONE_LANES-th cone from its own (cone_march.glsl, coneLane), and the
-// group adds the lanes' parts in shared memory. A GPU hides the latency of a cone's dependent
+// group adds the lanes' parts in shared memory (sumConeLanes), or, in cone_trace.comp
+// (CONE_LANE_PARTS_IN_BUFFER), each lane stores its part and a second dispatch adds them: on an
+// H200 the shared-memory sum of the narrow cones came out wrong there. A GPU hides the latency of a cone's dependent
 // lookups only with many invocations in flight, and the apexes that trace are too few for that
 // (a frame's one pixel per block, a bounce's gathering voxels); an apex's cones in one invocation
 // also make its runtime the sum of their lengths. With one lane per cone (or one lane for all),
@@ -11,7 +13,8 @@
 #ifndef CONE_LANES
 #define CONE_LANES 1
 #endif
-#if CONE_LANES > 1
+#if CONE_LANES > 1 && !defined(CONE_LANE_PARTS_IN_BUFFER) && !defined(SUM_CONE_LANES)
+#define CONE_LANES_SHARED 1
 shared vec4 coneLaneParts[gl_WorkGroupSize.x * gl_WorkGroupSize.y * CONE_LANES];
 #endif
 
@@ -24,7 +27,7 @@ void enterConeLane() {
 // The sum of the lanes' parts of this invocation's apex. Every invocation of the group calls it
 // (it holds barriers), whether it traced or not (a part of zero); it may be called again.
 vec4 sumConeLanes(vec4 part) {
-#if CONE_LANES > 1
+#ifdef CONE_LANES_SHARED
     const uint apexesPerLane = gl_WorkGroupSize.x * gl_WorkGroupSize.y;
     const uint apexSlot = gl_LocalInvocationIndex % apexesPerLane;
     coneLaneParts[gl_LocalInvocationIndex] = part;

@@ -46,8 +46,8 @@ std::size_t ConeTrace::bytes() const {
     const int b = std::max(tracedBlock_, 1);
     const std::size_t blocks = traced_.id() ? std::size_t((width_ + b - 1) / b) * ((height_ + b - 1) / b) : 0;
     const std::size_t ownTraceList = ownTracePixels_.id() ? std::size_t(width_) * height_ * 4 : 0;
-    return full + blocks * (16 + 4) + ownTraceList + (reuse_ ? reuse_->bytes() : 0) + (filter_ ? filter_->bytes() : 0) +
-           (carry_ ? carry_->bytes() : 0);
+    return full + blocks * (16 + 4) + ownTraceList + std::size_t(lanePartsBytes_) + (reuse_ ? reuse_->bytes() : 0) +
+           (filter_ ? filter_->bytes() : 0) + (carry_ ? carry_->bytes() : 0);
 }
 
 GiResolution parseGiResolution(const std::string& name) {
@@ -204,6 +204,16 @@ void ConeTrace::render(const GBuffer& gbuffer, const Octree& octree, const Radia
     if (!tracePrograms_[lanes].id())
         tracePrograms_[lanes] =
             gl::buildProgram({{GL_COMPUTE_SHADER, "cone_trace.comp"}}, {coneLanesDefine(lanes), "STORE_CONE_SAMPLES 1"});
+    // With lanes each listed cell's lanes store their parts, which a second dispatch adds in the
+    // cones' order: no shared memory and no barrier inside the trace.
+    if (lanes > 1 && !sumLanesPrograms_[lanes].id())
+        sumLanesPrograms_[lanes] =
+            gl::buildProgram({{GL_COMPUTE_SHADER, "cone_trace.comp"}}, {coneLanesDefine(lanes), "SUM_CONE_LANES 1"});
+    const GLsizeiptr lanePartsBytes = lanes > 1 ? GLsizeiptr(16) * lanes * tracedWidth * tracedHeight : 0;
+    if (lanePartsBytes > lanePartsBytes_) {
+        laneParts_ = gl::createBuffer(lanePartsBytes, nullptr, 0, "cone lanes' parts of the listed cells");
+        lanePartsBytes_ = lanePartsBytes;
+    }
     if (inBlocks && !traceListedPrograms_[lanes].id())
         traceListedPrograms_[lanes] =
             gl::buildProgram({{GL_COMPUTE_SHADER, "cone_upsample.comp"}}, {"TRACE_LISTED 1", coneLanesDefine(lanes)});
@@ -257,9 +267,22 @@ void ConeTrace::render(const GBuffer& gbuffer, const Octree& octree, const Radia
         if (reuse) call.storage(gl::SSBO_CONE_SAMPLES, reuse_->cones());
         call.storage(gl::SSBO_TRACE_CELLS, carry_->traceCells())
             .image(gl::IMAGE_INDIRECT, tracedImage, GL_READ_WRITE, GL_RGBA32F);
+        if (lanes > 1) call.storage(gl::SSBO_CONE_LANE_PARTS, laneParts_);
         listDispatch_.dispatch(call, counters_, gl::TRACE_CELL_COUNT_SLOT, traceArgs_, 0,
                                GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT |
                                    GL_SHADER_STORAGE_BARRIER_BIT);
+        if (lanes > 1) {
+            gl::ComputeCall sum(sumLanesPrograms_[lanes]);
+            sum.storage(gl::SSBO_CONE_COUNTERS, counters_)
+                .storage(gl::SSBO_TRACE_CELLS, carry_->traceCells())
+                .storage(gl::SSBO_CONE_LANE_PARTS, laneParts_)
+                .image(gl::IMAGE_INDIRECT, tracedImage, GL_READ_WRITE, GL_RGBA32F)
+                .uniform("uDownscale", block)
+                .uniform("uRayFirst", settings.rays > 0 ? batch * kNarrowConesPerDispatch : 0);
+            listDispatch_.dispatch(sum, counters_, gl::TRACE_CELL_COUNT_SLOT, traceArgs_, 0,
+                                   GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT |
+                                       GL_SHADER_STORAGE_BARRIER_BIT);
+        }
     }
     // The sharing and the filter run on the traced image; a different image size (another GI
     // resolution) makes a new filter.

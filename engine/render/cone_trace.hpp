@@ -155,8 +155,10 @@ void setConeMarchUniforms(gl::ComputeCall& call, const Octree& octree, const Rad
 // invocations in flight where few apexes trace (a frame's one pixel per block, a bounce's
 // gathering voxels), which made cone_trace twice as fast on an H200; but there the group's sum of
 // the lanes' parts came out wrong, and different from run to run, with narrow cones
-// (docs/benchmark.md, "Cone lanes on the H200"), so every device keeps one lane until that is
-// understood. VCT_CONE_LANES forces one lane ("1") or one per cone ("cones"), so that both are
+// (docs/benchmark.md, "Cone lanes on the H200"), so every device keeps one lane until a GPU
+// shows the remedy right: cone_trace's lanes now store their parts and a second dispatch adds
+// them, with no shared memory and no barrier (the pixels that trace their own cones and the bounce
+// gathers still add theirs in shared memory). VCT_CONE_LANES forces one lane ("1") or one per cone ("cones"), so that both are
 // checked on any machine: both must give the same bits, as each lane then traces at most one cone
 // of a dispatch (with two lanes for four cones, each lane's two would add up before the lanes do,
 // in another order). Sets of more than kMaxConeLanes cones keep one lane.
@@ -196,8 +198,11 @@ private:
     gl::Texture indirect_;
     gl::Texture traced_, tracedPixel_;  // half or quarter resolution only, made on first use
     int tracedBlock_ = 0;               // the block size they were made for
-    // The tracing programs for each count of lanes (coneLanes), made on first use; the upsampling.
-    std::array<gl::Program, kMaxConeLanes + 1> tracePrograms_, traceListedPrograms_;
+    // The tracing programs for each count of lanes (coneLanes), made on first use, and the pass
+    // that adds the lanes' parts of each listed cell; the upsampling.
+    std::array<gl::Program, kMaxConeLanes + 1> tracePrograms_, sumLanesPrograms_, traceListedPrograms_;
+    gl::Buffer laneParts_;  // with lanes: each listed cell's lanes' parts, made on first use
+    GLsizeiptr lanePartsBytes_ = 0;
     gl::Program upsampleProgram_;
     gl::Buffer counters_;
     gl::Buffer ownTracePixels_, dispatchArgs_;  // cone_upsample's list of pixels that trace their own
