@@ -1,11 +1,11 @@
 // Cone lanes: the invocations that trace the cones of one apex side by side, in the work group's
 // z (CONE_LANES of them; cone_trace.cpp, coneLanes). Requires cone_march.glsl.
 //
-// Each lane traces every CONE_LANES-th cone from its own (cone_march.glsl, coneLane), and the
-// group adds the lanes' parts in shared memory (sumConeLanes), or, in cone_trace.comp
-// (CONE_LANE_PARTS_IN_BUFFER), each lane stores its part and a second dispatch adds them: on an
-// H200 the shared-memory sum of the narrow cones came out wrong there. A GPU hides the latency of a cone's dependent
-// lookups only with many invocations in flight, and the apexes that trace are too few for that
+// Each lane traces every CONE_LANES-th cone from its own (cone_march.glsl, coneLane). The bounce
+// gathers add the lanes' parts in shared memory (sumConeLanes); cone_trace.comp
+// (CONE_LANE_PARTS_IN_BUFFER) has each lane store its part and a second dispatch add them, as on
+// an H200 the shared-memory sum of the narrow cones came out wrong. A GPU hides the latency of a
+// cone's dependent lookups only with many invocations in flight, and the apexes that trace are too few for that
 // (a frame's one pixel per block, a bounce's gathering voxels); an apex's cones in one invocation
 // also make its runtime the sum of their lengths. With one lane per cone (or one lane for all),
 // the parts are added in the cones' order, the order one invocation adds them in: the same bits

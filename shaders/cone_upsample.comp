@@ -1,6 +1,6 @@
 #version 450
 #ifdef TRACE_LISTED
-layout(local_size_x = 64, local_size_z = CONE_LANES) in;
+layout(local_size_x = 64) in;  // one invocation traces all the cones of a listed pixel
 #else
 layout(local_size_x = 8, local_size_y = 8) in;
 #endif
@@ -31,13 +31,10 @@ layout(std430, binding = SSBO_OWN_TRACE_PIXELS) buffer OwnTracePixels { uint own
 #ifdef TRACE_LISTED
 void main() {
     const uint listed = linearInvocation();
-    const bool traces = listed < coneCounters[CONE_COUNTER_OWN_TRACES];
-    const ivec2 pixel = traces ? unpackTracedPixel(ownTracePixels[listed]) : ivec2(0);
-    const vec4 part = traces ? gatherPixel(pixel, texelFetch(uPosition, pixel, 0).xyz,
-                                           normalize(texelFetch(uNormal, pixel, 0).xyz))
-                             : vec4(0.0);
-    const vec4 gathered = sumConeLanes(part);
-    if (traces && storesConeLanes()) storeTraced(pixel, finishTrace(gathered));
+    if (listed >= coneCounters[CONE_COUNTER_OWN_TRACES]) return;
+    const ivec2 pixel = unpackTracedPixel(ownTracePixels[listed]);
+    storeTraced(pixel, finishTrace(gatherPixel(pixel, texelFetch(uPosition, pixel, 0).xyz,
+                                               normalize(texelFetch(uNormal, pixel, 0).xyz))));
 }
 #else
 // Before any of that, a pixel that the last frame's light serves (pixel_carry.glsl: only the camera

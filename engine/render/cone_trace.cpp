@@ -214,9 +214,8 @@ void ConeTrace::render(const GBuffer& gbuffer, const Octree& octree, const Radia
         laneParts_ = gl::createBuffer(lanePartsBytes, nullptr, 0, "cone lanes' parts of the listed cells");
         lanePartsBytes_ = lanePartsBytes;
     }
-    if (inBlocks && !traceListedPrograms_[lanes].id())
-        traceListedPrograms_[lanes] =
-            gl::buildProgram({{GL_COMPUTE_SHADER, "cone_upsample.comp"}}, {"TRACE_LISTED 1", coneLanesDefine(lanes)});
+    if (inBlocks && !traceListedProgram_.id())
+        traceListedProgram_ = gl::buildProgram({{GL_COMPUTE_SHADER, "cone_upsample.comp"}}, {"TRACE_LISTED 1"});
     if (inBlocks && !upsampleProgram_.id()) {
         upsampleProgram_ = gl::buildProgram({{GL_COMPUTE_SHADER, "cone_upsample.comp"}});
         ownTracePixels_ = gl::createBuffer(GLsizeiptr(4) * width_ * height_, nullptr, 0, "pixels that trace their own cones");
@@ -311,7 +310,7 @@ void ConeTrace::render(const GBuffer& gbuffer, const Octree& octree, const Radia
         upsample.dispatchImage(width_, height_,
                                GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
         for (int batch = 0; batch < rayBatches; ++batch) {
-            gl::ComputeCall call = upsampleCall(traceListedPrograms_[lanes]);
+            gl::ComputeCall call = upsampleCall(traceListedProgram_);
             selectBatch(call, batch);
             listDispatch_.dispatch(call, counters_, gl::OWN_TRACE_COUNT_SLOT, dispatchArgs_, 0,
                                    GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);

@@ -157,8 +157,8 @@ void setConeMarchUniforms(gl::ComputeCall& call, const Octree& octree, const Rad
 // the lanes' parts came out wrong, and different from run to run, with narrow cones
 // (docs/benchmark.md, "Cone lanes on the H200"), so every device keeps one lane until a GPU
 // shows the remedy right: cone_trace's lanes now store their parts and a second dispatch adds
-// them, with no shared memory and no barrier (the pixels that trace their own cones and the bounce
-// gathers still add theirs in shared memory). VCT_CONE_LANES forces one lane ("1") or one per cone ("cones"), so that both are
+// them, with no shared memory and no barrier (the pixels that trace their own cones take one lane;
+// the bounce gathers still add their lanes' parts in shared memory). VCT_CONE_LANES forces one lane ("1") or one per cone ("cones"), so that both are
 // checked on any machine: both must give the same bits, as each lane then traces at most one cone
 // of a dispatch (with two lanes for four cones, each lane's two would add up before the lanes do,
 // in another order). Sets of more than kMaxConeLanes cones keep one lane.
@@ -199,8 +199,11 @@ private:
     gl::Texture traced_, tracedPixel_;  // half or quarter resolution only, made on first use
     int tracedBlock_ = 0;               // the block size they were made for
     // The tracing programs for each count of lanes (coneLanes), made on first use, and the pass
-    // that adds the lanes' parts of each listed cell; the upsampling.
-    std::array<gl::Program, kMaxConeLanes + 1> tracePrograms_, sumLanesPrograms_, traceListedPrograms_;
+    // that adds the lanes' parts of each listed cell; the upsampling, and the tracing of the
+    // pixels it lists (one lane: they are few, and their lanes' parts would need a buffer the
+    // size of the image).
+    std::array<gl::Program, kMaxConeLanes + 1> tracePrograms_, sumLanesPrograms_;
+    gl::Program traceListedProgram_;
     gl::Buffer laneParts_;  // with lanes: each listed cell's lanes' parts, made on first use
     GLsizeiptr lanePartsBytes_ = 0;
     gl::Program upsampleProgram_;
