@@ -62,7 +62,7 @@ costs="$costs 4 samples, camera moved: $(sed -n 's/^  "total_gpu_ms": \([0-9.]*\
 rm -f "$out/costs.png"
 step "costs at 256³, light moved with N bounces / camera moved with 4 samples (GPU ms):$costs"
 start=$SECONDS
-(cd build && timeout 150 ctest -j"$(nproc)" --output-on-failure --timeout 100) >"$out/ctest.log" 2>&1
+(cd build && timeout 200 ctest -j"$(nproc)" --output-on-failure --timeout 150) >"$out/ctest.log" 2>&1
 step "ctest: exit $? in $((SECONDS - start)) s: $(grep -E 'tests passed|tests failed' "$out/ctest.log")"
 # Each failed test by its cause: the output ctest prints after a failure names the stub it hit.
 step "ctest failures: $(awk '
