@@ -5,15 +5,15 @@
 // gathers add the lanes' parts in shared memory (sumConeLanes); cone_trace.comp
 // (CONE_LANE_PARTS_IN_BUFFER) has each lane store its part and a second dispatch add them, as on
 // an H200 the shared-memory sum of the narrow cones came out wrong. A GPU hides the latency of a
-// cone's dependent lookups only with many invocations in flight, and the apexes that trace are too few for that
-// (a frame's one pixel per block, a bounce's gathering voxels); an apex's cones in one invocation
-// also make its runtime the sum of their lengths. With one lane per cone (or one lane for all),
-// the parts are added in the cones' order, the order one invocation adds them in: the same bits
-// either way.
+// cone's dependent lookups only with many invocations in flight, and the apexes that trace are
+// too few for that (a frame's one pixel per block, a bounce's gathering voxels); an apex's cones
+// in one invocation also make its runtime the sum of their lengths. With one lane per cone (or
+// one lane for all), the parts are added in the cones' order, the order one invocation adds them
+// in: the same bits either way.
 #ifndef CONE_LANES
 #define CONE_LANES 1
 #endif
-#if CONE_LANES > 1 && !defined(CONE_LANE_PARTS_IN_BUFFER) && !defined(SUM_CONE_LANES)
+#if CONE_LANES > 1 && !defined(CONE_LANE_PARTS_IN_BUFFER)
 #define CONE_LANES_SHARED 1
 shared vec4 coneLaneParts[gl_WorkGroupSize.x * gl_WorkGroupSize.y * CONE_LANES];
 #endif

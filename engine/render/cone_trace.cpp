@@ -259,28 +259,27 @@ void ConeTrace::render(const GBuffer& gbuffer, const Octree& octree, const Radia
         carry_ = std::make_unique<ConeCarry>(width_, height_, tracedWidth, tracedHeight);
     carry_->listCells(gbuffer, tracedImage, inBlocks ? tracedPixel_.id() : 0, counters_, {block, sceneVersion}, view,
                       sample & (block * block - 1), octree.grid.voxelSize, sample == 0 ? settings.carryVoxels : 0.0f);
-    for (int batch = 0; batch < rayBatches; ++batch) {
-        gl::ComputeCall call = tracingCall(tracePrograms_[lanes]);
+    // A dispatch over the listed cells (the trace, and with lanes the sum of their parts): it reads
+    // the list and adds to what the batches before stored in the traced image.
+    auto dispatchOverListedCells = [&](gl::ComputeCall& call, int batch) {
         selectBatch(call, batch);
-        call.uniform("uStoreConeSamples", reuse ? 1 : 0).uniform("uConeSampleRowLength", tracedWidth);
-        if (reuse) call.storage(gl::SSBO_CONE_SAMPLES, reuse_->cones());
-        call.storage(gl::SSBO_TRACE_CELLS, carry_->traceCells())
-            .image(gl::IMAGE_INDIRECT, tracedImage, GL_READ_WRITE, GL_RGBA32F);
+        call.storage(gl::SSBO_CONE_COUNTERS, counters_)
+            .storage(gl::SSBO_TRACE_CELLS, carry_->traceCells())
+            .image(gl::IMAGE_INDIRECT, tracedImage, GL_READ_WRITE, GL_RGBA32F)
+            .uniform("uDownscale", block);
         if (lanes > 1) call.storage(gl::SSBO_CONE_LANE_PARTS, laneParts_);
         listDispatch_.dispatch(call, counters_, gl::TRACE_CELL_COUNT_SLOT, traceArgs_, 0,
                                GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT |
                                    GL_SHADER_STORAGE_BARRIER_BIT);
+    };
+    for (int batch = 0; batch < rayBatches; ++batch) {
+        gl::ComputeCall call = tracingCall(tracePrograms_[lanes]);
+        call.uniform("uStoreConeSamples", reuse ? 1 : 0).uniform("uConeSampleRowLength", tracedWidth);
+        if (reuse) call.storage(gl::SSBO_CONE_SAMPLES, reuse_->cones());
+        dispatchOverListedCells(call, batch);
         if (lanes > 1) {
             gl::ComputeCall sum(sumLanesPrograms_[lanes]);
-            sum.storage(gl::SSBO_CONE_COUNTERS, counters_)
-                .storage(gl::SSBO_TRACE_CELLS, carry_->traceCells())
-                .storage(gl::SSBO_CONE_LANE_PARTS, laneParts_)
-                .image(gl::IMAGE_INDIRECT, tracedImage, GL_READ_WRITE, GL_RGBA32F)
-                .uniform("uDownscale", block)
-                .uniform("uRayFirst", settings.rays > 0 ? batch * kNarrowConesPerDispatch : 0);
-            listDispatch_.dispatch(sum, counters_, gl::TRACE_CELL_COUNT_SLOT, traceArgs_, 0,
-                                   GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT |
-                                       GL_SHADER_STORAGE_BARRIER_BIT);
+            dispatchOverListedCells(sum, batch);
         }
     }
     // The sharing and the filter run on the traced image; a different image size (another GI

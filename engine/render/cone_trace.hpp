@@ -157,11 +157,12 @@ void setConeMarchUniforms(gl::ComputeCall& call, const Octree& octree, const Rad
 // the lanes' parts came out wrong, and different from run to run, with narrow cones
 // (docs/benchmark.md, "Cone lanes on the H200"), so every device keeps one lane until a GPU
 // shows the remedy right: cone_trace's lanes now store their parts and a second dispatch adds
-// them, with no shared memory and no barrier (the pixels that trace their own cones take one lane;
-// the bounce gathers still add their lanes' parts in shared memory). VCT_CONE_LANES forces one lane ("1") or one per cone ("cones"), so that both are
-// checked on any machine: both must give the same bits, as each lane then traces at most one cone
-// of a dispatch (with two lanes for four cones, each lane's two would add up before the lanes do,
-// in another order). Sets of more than kMaxConeLanes cones keep one lane.
+// them, with no shared memory and no barrier (the pixels that trace their own cones take one
+// lane; the bounce gathers still add their lanes' parts in shared memory). VCT_CONE_LANES forces
+// one lane ("1") or one per cone ("cones"), so that both are checked on any machine: both must
+// give the same bits, as each lane then traces at most one cone of a dispatch (with two lanes for
+// four cones, each lane's two would add up before the lanes do, in another order). Sets of more
+// than kMaxConeLanes cones keep one lane.
 constexpr int kMaxConeLanes = 9;
 int coneLanes(const ConeSettings& settings);
 // The shader define that builds a tracing program for `lanes` lanes.
