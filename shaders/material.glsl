@@ -74,7 +74,17 @@ vec4 materialBaseColorOverPixel(vec2 uv, vec3 vertexColor) {
 // The triangle's unit geometric normal turned to face `towards` (all surfaces are two-sided):
 // exact from the position's derivatives, which the whole pixel quad takes on one triangle's plane.
 vec3 facingGeometricNormal(vec3 position, vec3 towards) {
-    vec3 geometric = cross(dFdx(position), dFdy(position));
+    vec3 dx = dFdx(position), dy = dFdy(position);
+    vec3 geometric = cross(dx, dy);
+    // The squared length of that cross product goes with the fourth power of the scene's scale and
+    // leaves float's range beyond about 1e9 scene units per pixel (and below about 1e-9): then the
+    // derivatives are first brought to unit size.
+    float length2 = dot(geometric, geometric);
+    if (!(length2 > 1e-30 && length2 < 1e30)) {
+        dx /= max(max(abs(dx.x), abs(dx.y)), max(abs(dx.z), 1e-37));
+        dy /= max(max(abs(dy.x), abs(dy.y)), max(abs(dy.z), 1e-37));
+        geometric = cross(dx, dy);
+    }
     if (!(dot(geometric, geometric) > 0.0)) geometric = towards;
     geometric = normalize(geometric);
     return dot(geometric, towards) < 0.0 ? -geometric : geometric;

@@ -48,6 +48,18 @@ void alphaMaskFilter(const RTCFilterFunctionNArguments* args) {
     }
 }
 
+// The unit normal of triangle abc, or `fallback` where it has none (zero area). The cross
+// product's squared length goes with the fourth power of the scene's scale and leaves float's
+// range beyond edges of about 1e9 (and below about 1e-9): then it is taken in double.
+glm::vec3 unitNormal(glm::vec3 a, glm::vec3 b, glm::vec3 c, glm::vec3 fallback) {
+    const glm::vec3 n = glm::cross(b - a, c - a);
+    const float length = glm::length(n);
+    if (length > 1e-15f && std::isfinite(length)) return n / length;
+    const glm::dvec3 wide = glm::cross(glm::dvec3(b) - glm::dvec3(a), glm::dvec3(c) - glm::dvec3(a));
+    const double wideLength = glm::length(wide);
+    return wideLength > 0.0 && std::isfinite(wideLength) ? glm::vec3(wide / wideLength) : fallback;
+}
+
 float maxAbs(glm::vec3 p) { return std::max({std::abs(p.x), std::abs(p.y), std::abs(p.z)}); }
 
 }  // namespace
@@ -63,6 +75,15 @@ RayScene::RayScene(const Scene& scene, const MaterialTable& materials) : scene_(
     if (anyMasked && !rtcGetDeviceProperty(device_, RTC_DEVICE_PROPERTY_FILTER_FUNCTION_SUPPORTED))
         fail("this Embree library was built without filter functions, which the alpha-masked materials need");
 
+    const Bounds local = scene.localBounds();
+    const float extent = float(std::max({std::abs(local.min.x), std::abs(local.min.y), std::abs(local.min.z),
+                                         std::abs(local.max.x), std::abs(local.max.y), std::abs(local.max.z)}));
+    scaleExponent_ = extent > 0.0f && std::isfinite(extent) ? -std::ilogb(extent) : 0;
+    positions_.reserve(scene.vertices.size());
+    for (const Vertex& v : scene.vertices)
+        positions_.emplace_back(std::ldexp(v.position.x, scaleExponent_), std::ldexp(v.position.y, scaleExponent_),
+                                std::ldexp(v.position.z, scaleExponent_), 0.0f);
+
     rtcScene_ = rtcNewScene(device_);
     rtcSetSceneFlags(rtcScene_, RTC_SCENE_FLAG_ROBUST);
     rtcSetSceneBuildQuality(rtcScene_, RTC_BUILD_QUALITY_HIGH);
@@ -73,10 +94,8 @@ RayScene::RayScene(const Scene& scene, const MaterialTable& materials) : scene_(
             fail("draw range of material ", r.material, " is not whole triangles (a loader bug: please report it)");
         ranges_.push_back({&scene, &materials, r.firstIndex / 3, r.material});
         RTCGeometry geometry = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_TRIANGLE);
-        // Shared, not copied. Embree reads vertices with 16-byte loads; with Vertex's 32-byte
-        // stride the position of the last vertex is followed by its normal, so that is safe.
-        rtcSetSharedGeometryBuffer(geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, scene.vertices.data(),
-                                   offsetof(Vertex, position), sizeof(Vertex), scene.vertices.size());
+        rtcSetSharedGeometryBuffer(geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, positions_.data(), 0,
+                                   sizeof(glm::vec4), positions_.size());
         rtcSetSharedGeometryBuffer(geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, scene.indices.data(),
                                    std::size_t(r.firstIndex) * sizeof(std::uint32_t), 3 * sizeof(std::uint32_t),
                                    r.indexCount / 3);
@@ -94,9 +113,6 @@ RayScene::RayScene(const Scene& scene, const MaterialTable& materials) : scene_(
     rtcCommitScene(rtcScene_);
     checkDevice(device_, "building the BVH");
 
-    const Bounds local = scene.localBounds();
-    const float extent = float(std::max({std::abs(local.min.x), std::abs(local.min.y), std::abs(local.min.z),
-                                         std::abs(local.max.x), std::abs(local.max.y), std::abs(local.max.z)}));
     // Even a hit at the local origin of a huge scene is computed from vertices that may be far
     // away: never offset by less than a much smaller fraction of the scene's extent.
     minimumOffset_ = std::max(extent * kRelativeOffset * 1e-3f, std::numeric_limits<float>::min());
@@ -111,14 +127,14 @@ std::optional<SurfaceHit> RayScene::intersect(glm::vec3 origin, glm::vec3 direct
     RTCIntersectContext context;
     rtcInitIntersectContext(&context);
     RTCRayHit rh;
-    rh.ray.org_x = origin.x;
-    rh.ray.org_y = origin.y;
-    rh.ray.org_z = origin.z;
+    rh.ray.org_x = std::ldexp(origin.x, scaleExponent_);
+    rh.ray.org_y = std::ldexp(origin.y, scaleExponent_);
+    rh.ray.org_z = std::ldexp(origin.z, scaleExponent_);
     rh.ray.dir_x = direction.x;
     rh.ray.dir_y = direction.y;
     rh.ray.dir_z = direction.z;
     rh.ray.tnear = 0.0f;
-    rh.ray.tfar = tFar;
+    rh.ray.tfar = std::ldexp(tFar, scaleExponent_);
     rh.ray.time = 0.0f;
     rh.ray.mask = 0xffffffffu;
     rh.ray.id = 0;
@@ -137,7 +153,7 @@ std::optional<SurfaceHit> RayScene::intersect(glm::vec3 origin, glm::vec3 direct
     const float u = rh.hit.u, v = rh.hit.v, w = 1.0f - u - v;
 
     SurfaceHit hit;
-    hit.distance = rh.ray.tfar;
+    hit.distance = std::ldexp(rh.ray.tfar, -scaleExponent_);
     hit.material = range.material;
     // The point from barycentrics, not origin + t·direction: its error is relative to the
     // triangle's coordinates, not to the (possibly long) ray.
@@ -145,9 +161,7 @@ std::optional<SurfaceHit> RayScene::intersect(glm::vec3 origin, glm::vec3 direct
     hit.uv = w * a.uv + u * b.uv + v * c.uv;
     hit.uv1 = w * a.uv1 + u * b.uv1 + v * c.uv1;
     hit.color = w * a.color + u * b.color + v * c.color;
-    const glm::vec3 ng = glm::cross(b.position - a.position, c.position - a.position);
-    const float ngLength = glm::length(ng);
-    hit.geometricNormal = ngLength > 0.0f && std::isfinite(ngLength) ? ng / ngLength : -direction;
+    hit.geometricNormal = unitNormal(a.position, b.position, c.position, -direction);
     const glm::vec3 ns = w * a.normal + u * b.normal + v * c.normal;
     const float nsLength2 = glm::dot(ns, ns);
     hit.shadingNormal = nsLength2 > 1e-24f && std::isfinite(nsLength2) ? ns / std::sqrt(nsLength2) : hit.geometricNormal;
@@ -164,14 +178,14 @@ bool RayScene::occluded(glm::vec3 origin, glm::vec3 direction, float tFar) const
     RTCIntersectContext context;
     rtcInitIntersectContext(&context);
     RTCRay ray;
-    ray.org_x = origin.x;
-    ray.org_y = origin.y;
-    ray.org_z = origin.z;
+    ray.org_x = std::ldexp(origin.x, scaleExponent_);
+    ray.org_y = std::ldexp(origin.y, scaleExponent_);
+    ray.org_z = std::ldexp(origin.z, scaleExponent_);
     ray.dir_x = direction.x;
     ray.dir_y = direction.y;
     ray.dir_z = direction.z;
     ray.tnear = 0.0f;
-    ray.tfar = tFar;
+    ray.tfar = std::ldexp(tFar, scaleExponent_);
     ray.time = 0.0f;
     ray.mask = 0xffffffffu;
     ray.id = 0;

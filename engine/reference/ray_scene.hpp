@@ -3,8 +3,13 @@
 // tracer, with alpha-masked materials honoured on every kind of ray.
 //
 // Layout: one Embree triangle geometry per Scene::DrawRange (triangles are sorted by material,
-// so geomID names the material), all sharing the Scene's own vertex array and index array
-// (rtcSetSharedGeometryBuffer, no copy). Geometries of alpha-masked materials get an
+// so geomID names the material), all sharing the Scene's index array and one copy of the vertex
+// positions scaled to unit size (rtcSetSharedGeometryBuffer). Embree's intersection test
+// multiplies coordinates three at a time, in float with denormals flushed to zero: in a scene
+// 1e12 units wide its products overflow and in one 1e-12 wide they vanish, so shadows went
+// missing. Scaled by a power of two, which every float multiplication carries exactly, Embree
+// sees the same numbers at every scale; rays are scaled on the way in and distances on the way
+// out. Geometries of alpha-masked materials get an
 // intersection filter that samples the texture's alpha at the hit and rejects holes, so camera,
 // bounce and shadow rays all pass through cut-outs exactly as the rasterizer's `discard` does.
 //
@@ -76,7 +81,9 @@ public:
 
 private:
     const Scene& scene_;
-    std::vector<RangeData> ranges_;  // indexed by geomID
+    int scaleExponent_ = 0;              // Embree's coordinates are the scene's times 2^scaleExponent_
+    std::vector<glm::vec4> positions_;   // scaled; vec4 because Embree reads 16 bytes per vertex
+    std::vector<RangeData> ranges_;      // indexed by geomID
     float minimumOffset_ = 0.0f;     // floor of SurfaceHit::offset from the scene's size
     RTCDevice device_ = nullptr;
     RTCScene rtcScene_ = nullptr;

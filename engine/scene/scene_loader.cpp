@@ -233,6 +233,50 @@ NonFiniteScan removeNonFinitePositions(aiScene& ai, const std::vector<FlatNode>&
     return scan;
 }
 
+// Assimp's post-processing steps compare positions and normalise normals in float, with
+// epsilons and squared lengths that suit a model about one unit in size: at a millionth of that
+// JoinIdenticalVertices and GenSmoothNormals merge and split the wrong vertices (triangles
+// collapse), and from about 1e10 units a face normal's squared length overflows, so every
+// generated normal is zero. For those steps each mesh is therefore brought to a size between 1
+// and 2 by a power of two, which scales a float exactly, and afterwards scaled back. Returns the
+// exponent applied to each mesh.
+std::vector<int> scaleMeshesToUnitSize(aiScene& ai) {
+    std::vector<int> exponents(ai.mNumMeshes, 0);
+    for (unsigned m = 0; m < ai.mNumMeshes; ++m) {
+        aiMesh* mesh = ai.mMeshes[m];
+        if (!mesh || !mesh->mVertices) continue;
+        float lowest[3] = {INFINITY, INFINITY, INFINITY}, highest[3] = {-INFINITY, -INFINITY, -INFINITY};
+        float largest = 0.0f;  // the largest |coordinate|, so that scaling up cannot overflow
+        for (unsigned v = 0; v < mesh->mNumVertices; ++v)
+            for (int a = 0; a < 3; ++a) {
+                const float x = mesh->mVertices[v][a];
+                if (!std::isfinite(x)) continue;  // sanitized away later
+                lowest[a] = std::min(lowest[a], x);
+                highest[a] = std::max(highest[a], x);
+                largest = std::max(largest, std::abs(x));
+            }
+        float size = 0.0f;
+        for (int a = 0; a < 3; ++a)
+            if (highest[a] >= lowest[a]) size = std::max(size, highest[a] - lowest[a]);
+        if (!(size > 0.0f) || !std::isfinite(size)) continue;
+        int exponent = -std::ilogb(size);  // size · 2^exponent in [1, 2)
+        exponent = std::min(exponent, 100 - std::ilogb(largest));  // keep every coordinate below 2^101
+        exponents[m] = exponent;
+        for (unsigned v = 0; v < mesh->mNumVertices; ++v)
+            for (int a = 0; a < 3; ++a) mesh->mVertices[v][a] = std::ldexp(mesh->mVertices[v][a], exponent);
+    }
+    return exponents;
+}
+
+void undoMeshScales(aiScene& ai, const std::vector<int>& exponents) {
+    for (unsigned m = 0; m < ai.mNumMeshes && m < exponents.size(); ++m) {
+        aiMesh* mesh = ai.mMeshes[m];
+        if (!mesh || !mesh->mVertices || exponents[m] == 0) continue;
+        for (unsigned v = 0; v < mesh->mNumVertices; ++v)
+            for (int a = 0; a < 3; ++a) mesh->mVertices[v][a] = std::ldexp(mesh->mVertices[v][a], -exponents[m]);
+    }
+}
+
 // A node's world transform as applied to its meshes.
 struct InstanceTransform {
     explicit InstanceTransform(const glm::dmat4& nodeWorld)
@@ -597,7 +641,7 @@ void checkModelPath(const fs::path& path) {
 // Reads the file with Assimp (which keeps the result): triangulated, meshes split by primitive
 // type (so that points and lines can be counted and skipped); then, once non-finite positions
 // are dealt with (see NonFiniteScan), identical vertices shared and normals generated where the
-// file has none. Node transforms are applied later, in double precision (not
+// file has none, each mesh scaled to unit size meanwhile (scaleMeshesToUnitSize). Node transforms are applied later, in double precision (not
 // aiProcess_PreTransformVertices). Assimp's own warnings are passed on once the read succeeded.
 const aiScene& readModel(Assimp::Importer& importer, const std::string& source, bool sanitize,
                          NonFiniteScan& nonFinite) {
@@ -624,6 +668,7 @@ const aiScene& readModel(Assimp::Importer& importer, const std::string& source, 
 
     nonFinite =
         removeNonFinitePositions(*const_cast<aiScene*>(ai), flattenNodes(*ai), source, sanitize);
+    const std::vector<int> exponents = scaleMeshesToUnitSize(*const_cast<aiScene*>(ai));
     try {
         ai = importer.ApplyPostProcessing(aiProcess_JoinIdenticalVertices |
                                           aiProcess_GenSmoothNormals);
@@ -632,6 +677,7 @@ const aiScene& readModel(Assimp::Importer& importer, const std::string& source, 
     }
     if (!ai || !ai->mRootNode)
         fail("cannot read model '", source, "': ", importer.GetErrorString());
+    undoMeshScales(*const_cast<aiScene*>(ai), exponents);
     assimpLog.report(source);
     return *ai;
 }
