@@ -294,6 +294,7 @@ TEST(RegionRatio, CompareRefusesMalformedGridsWithAClearMessage) {
     const auto tooMany = test::runVct("compare " + ab + " --regions 11x3");
     EXPECT_NE(tooMany.exitCode, 0);
     EXPECT_NE(tooMany.output.find("at least one pixel per cell"), std::string::npos) << tooMany.output;
+    EXPECT_EQ(tooMany.output.find("rmse"), std::string::npos) << "metrics printed before the error:\n" << tooMany.output;
     const auto badStops = test::runVct("compare " + ab + " --ratio-image " + path(dir / "r.png") + " --ratio-stops 0");
     EXPECT_NE(badStops.exitCode, 0);
     EXPECT_NE(badStops.output.find("--ratio-stops"), std::string::npos) << badStops.output;

@@ -177,6 +177,9 @@ void run(const CompareOptions& o) {
         mask = metrics::maskFromImage(maskImage);
     }
     const metrics::ImageMetrics m = metrics::compareImages(a, b, mask, display);
+    // Before anything is printed: a grid the image cannot hold fails alone, not after the metrics.
+    std::optional<metrics::RegionRatios> regions;
+    if (grid) regions = metrics::regionRatios(a, b, grid->columns, grid->rows, &mask);
 
     std::printf("compare %s against %s: %dx%d, %zu pixels%s\n", o.a.c_str(), o.b.c_str(), m.width, m.height, m.pixels,
                 o.mask.empty() ? "" : concat(" (mask ", o.mask, ")").c_str());
@@ -188,11 +191,7 @@ void run(const CompareOptions& o) {
                 100.0 * m.relErrorMedian, 100.0 * m.relErrorP95, 100.0 * m.fractionWithin1Percent,
                 100.0 * m.fractionWithin5Percent);
     std::printf("  mean luminance  A %.6g  B %.6g\n", m.meanLuminanceA, m.meanLuminanceB);
-    std::optional<metrics::RegionRatios> regions;
-    if (grid) {
-        regions = metrics::regionRatios(a, b, grid->columns, grid->rows, &mask);
-        printRegions(*regions);
-    }
+    if (regions) printRegions(*regions);
 
     if (!o.errorImage.empty()) {
         writePng(o.errorImage, metrics::relativeErrorImage(a, b, mask, o.errorScale));
