@@ -196,6 +196,19 @@ TEST(CliBadInput, UnknownPresetBackendAndValues) {
                      "--only-cone");
 }
 
+TEST(CliBadInput, OutputNamesMustSayTheirFormat) {
+    // A PNG named a.bmp was written before; every output is refused up front instead.
+    expectCleanError(test::runVct("render --scene cornell" + kSmall + "--out /tmp/x.bmp"), "--out writes a PNG image");
+    expectCleanError(test::runVct("render --scene cornell" + kSmall + "--out /tmp/x.png --hdr-out /tmp/x.tiff"),
+                     "--hdr-out writes linear HDR");
+    expectCleanError(test::runVct("reference --scene cornell --width 8 --height 8 --spp 1 --out /tmp/x.png"),
+                     "--out writes linear HDR");
+    expectCleanError(test::runVct("reference --scene cornell --width 8 --height 8 --spp 1 --out /tmp/x.pfm --png /tmp/x.jpg"),
+                     "--png writes a PNG image");
+    expectCleanError(test::runVct("compare /tmp/a.pfm /tmp/b.pfm --ratio-image /tmp/r.jpg"), "--ratio-image writes a PNG");
+    expectCleanError(test::runVct("compare /tmp/a.pfm /tmp/b.pfm --error-image /tmp/e"), "--error-image writes a PNG");
+}
+
 TEST(CliBadInput, UsageErrorsExitWithTwo) {
     EXPECT_EQ(test::runVct("render --no-such-option").exitCode, 2);
     EXPECT_EQ(test::runVct("").exitCode, 2);

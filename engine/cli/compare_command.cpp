@@ -153,8 +153,8 @@ std::string formatPsnr(double psnr) {
 
 void run(const CompareOptions& o) {
     if (!o.json.empty()) ensureWritable(o.json);
-    if (!o.errorImage.empty()) ensureWritable(o.errorImage);
-    if (!o.ratioImage.empty()) ensureWritable(o.ratioImage);
+    if (!o.errorImage.empty()) ensureWritablePng(o.errorImage, "--error-image");
+    if (!o.ratioImage.empty()) ensureWritablePng(o.ratioImage, "--ratio-image");
     std::optional<RegionGrid> grid;
     if (o.regionsGiven) grid = parseRegionGrid(o.regions);
     if (!(o.ratioStops > 0.0) || !std::isfinite(o.ratioStops))

@@ -31,14 +31,11 @@ void run(ReferenceOptions& o) {
     settings.samplesPerPixel = o.spp.value_or(settings.timeLimitSeconds > 0 ? reference::kUnlimitedSpp : 16);
     reference::validate(settings);
     const TonemapCurve curve = parseTonemapCurve(o.toneCurve);
-    for (const std::string* path : {&o.out, &o.directOut, &o.indirectOut, &o.varianceOut}) {
-        if (path->empty()) continue;
-        ensureWritable(*path);
-        const auto ext = std::filesystem::path(*path).extension().string();
-        if (ext != ".pfm" && ext != ".exr" && ext != ".PFM" && ext != ".EXR")
-            fail("unsupported HDR output '", *path, "': use a .pfm or .exr file name");
-    }
-    if (!o.png.empty()) ensureWritable(o.png);
+    const std::pair<const std::string*, const char*> hdrOutputs[] = {
+        {&o.out, "--out"}, {&o.directOut, "--direct-out"}, {&o.indirectOut, "--indirect-out"}, {&o.varianceOut, "--variance-out"}};
+    for (const auto& [path, option] : hdrOutputs)
+        if (!path->empty()) ensureWritableHdr(*path, option);
+    if (!o.png.empty()) ensureWritablePng(o.png, "--png");
 
     const Scene scene = loadSceneFromOptions(o.scene);
     const Camera camera = cameraFromOptions(o.scene, scene);

@@ -57,8 +57,8 @@ void run(const RenderOptions& o) {
     if (o.samples < 1 || o.samples > kMaxPixelSamples)
         fail("--samples ", o.samples, " is out of range; use 1..", kMaxPixelSamples);
     // Check what the user can get wrong before the expensive steps.
-    ensureWritable(o.out);
-    if (!o.hdrOut.empty()) ensureWritable(o.hdrOut);
+    ensureWritablePng(o.out, "--out");
+    if (!o.hdrOut.empty()) ensureWritableHdr(o.hdrOut, "--hdr-out");
     if (!o.timingsOut.empty()) ensureWritable(o.timingsOut);
     const auto backend = gl::parseBackend(o.backend);
     if (!o.lightPath.empty() && o.lightPath != "orbit")

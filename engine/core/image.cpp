@@ -69,6 +69,19 @@ void ensureWritable(const fs::path& path) {
         fail("cannot write '", path.string(), "': folder '", folder.string(), "' does not exist");
 }
 
+void ensureWritablePng(const fs::path& path, const char* option) {
+    ensureWritable(path);
+    if (lowerExtension(path) != ".png")
+        fail(option, " writes a PNG image: name the file .png, not '", path.string(), "'");
+}
+
+void ensureWritableHdr(const fs::path& path, const char* option) {
+    ensureWritable(path);
+    const std::string ext = lowerExtension(path);
+    if (ext != ".pfm" && ext != ".exr")
+        fail(option, " writes linear HDR: name the file .pfm or .exr, not '", path.string(), "'");
+}
+
 void writePng(const fs::path& path, const Image8& image) {
     ensureWritable(path);
     if (!stbi_write_png(path.c_str(), image.width, image.height, 4, image.rgba.data(), image.width * 4))
