@@ -378,4 +378,9 @@ TEST(GltfFeatures, EmissiveStrengthMultipliesTheEmissiveColour) {
     const vct::Scene scene = vct::loadModelFile(vct::test::writeGltfQuad(dir, "glowing", quad));
     EXPECT_EQ(scene.materials.at(0).emissive, glm::vec3(4.0f, 2.0f, 1.0f));
     EXPECT_TRUE(scene.report.unsupportedFeatures.empty());
+
+    // A strength whose product overflows float is as bright as vct goes (1e9 W/(m²·sr)), not dark.
+    quad.material["extensions"]["KHR_materials_emissive_strength"]["emissiveStrength"] = 1e40;
+    const vct::Scene blinding = vct::loadModelFile(vct::test::writeGltfQuad(dir, "blinding", quad));
+    EXPECT_EQ(blinding.materials.at(0).emissive, glm::vec3(1e9f));
 }

@@ -28,12 +28,13 @@ bool finite3(const aiColor4D& c) {
     return std::isfinite(c.r) && std::isfinite(c.g) && std::isfinite(c.b);
 }
 
-// A colour property sanitized to finite values in [0, max]; warns (once per material/key) when
-// it had to change anything.
+// A colour property sanitized to finite values in [0, max]: NaN and negative values become 0,
+// values above max (+Inf too: a product such as emission × strength that overflowed float) max.
+// Warns (once per material/key) when it had to change anything.
 glm::vec3 sanitizeColour(glm::vec3 c, float max, const std::string& material, const char* what) {
     glm::vec3 out = c;
     for (int i = 0; i < 3; ++i) {
-        if (!std::isfinite(out[i]) || out[i] < 0.0f) out[i] = 0.0f;
+        if (std::isnan(out[i]) || out[i] < 0.0f) out[i] = 0.0f;
         if (out[i] > max) out[i] = max;
     }
     if (out != c)
