@@ -12,7 +12,10 @@ layout(local_size_x = 64) in;
 // surface may face either way, and a thin wall is lit on both sides). The voxel's outgoing
 // radiance becomes its first-bounce radiance L₀ (photons and emission, kept in `bounceBase`)
 // plus ρ/π·E of each side; the radiance filter then runs again over it, so each call adds one
-// bounce: L_k = L₀ + ρ/π·E[L_{k−1}].
+// bounce: L_k = L₀ + ρ/π·E[L_{k−1}]. The cones read L_{k−1} (narrow cones read the voxels
+// themselves, cell_radiance.glsl) while the voxels' L_k goes to bounceBase, copied over the cell
+// radiance once every voxel has gathered (bounce_gather.cpp): no voxel reads a neighbour's new
+// light, whichever gathers first.
 // The shares of that radiance leaving towards each axis direction follow (facing.glsl).
 // Sixteen storage blocks at most (GL's least per compute shader): the gather needs no border lists.
 #define RADIANCE_WITHOUT_BORDER_LISTS
@@ -23,7 +26,9 @@ layout(local_size_x = 64) in;
 layout(std430, binding = SSBO_CELL_VALUES) buffer CellAlbedo { uint cellAlbedo[]; };   // RGBA8 albedo, opacity
 layout(std430, binding = SSBO_CELL_NORMAL) buffer CellNormal { uint cellNormal[]; };   // octahedral
 // The first bounce: (L₀·τ, τ) of every cell, then its six exit shares (two vec4) of every cell;
-// then the irradiance gathered on both sides of every cell (written for first children, see below).
+// then the irradiance gathered on both sides of every cell (written for first children, see below);
+// then this bounce's result: (L_k·τ, τ) and the exit shares of every cell (the last bounce's where
+// a cell stores none).
 layout(std430, binding = SSBO_BOUNCE_BASE) buffer BounceBase { vec4 bounceBase[]; };
 // Cells that gather their own (GATHER_LISTED reads them; its count is a list count).
 layout(std430, binding = SSBO_BOUNCE_LIST) buffer BounceList { uint ownGatherCells[]; };
@@ -61,8 +66,9 @@ void storeBounced(uint cell, uint cellCount, uint node, vec4 albedo, vec3 normal
         shares[i >> 2][i & 3] = (firstWeight * shares[i >> 2][i & 3] + frontWeight * front + backWeight * (1.0 - front)) / total;
     }
     float tau = radianceWeight(albedo.a);
-    cellRadiance[cell] = vec4(radiance * tau, tau);
-    storeExitShares(cell, shares[0], shares[1].xy);
+    bounceBase[5u * cellCount + cell] = vec4(radiance * tau, tau);
+    bounceBase[6u * cellCount + 2u * cell] = shares[0];
+    bounceBase[6u * cellCount + 2u * cell + 1u].xy = shares[1].xy;  // beside them the lit place (facing.glsl)
     touch(node, uLevels);
 }
 
@@ -167,8 +173,10 @@ void main() {
     for (int side = 0; side < 2; ++side) {
         vec3 n = side == 0 ? normal : -normal;
         bool gather = valid && (!solid[side] || siblingTakesSide(nodeParent[node], cell, normal, n));
-        // The cone set (voxelGatherCones): no narrow cones to shift.
-        vec4 part = gather ? gatherIrradiance(centre + n * uConeOffset, n, n, vec2(0.0)) : vec4(0.0);
+        // Narrow cones (voxelGatherCones) point along a lattice shifted by a hash of the voxel and
+        // side, so that neighbouring voxels sample other directions; the cone set takes no shift.
+        vec2 shift = hashToUnitSquare(vec3(centre.xy, 2.0 * centre.z + float(side)));
+        vec4 part = gather ? gatherIrradiance(centre + n * uConeOffset, n, n, shift) : vec4(0.0);
         irradiance[side] = sumConeLanes(part).rgb;
     }
     if (!valid || !storesConeLanes()) return;

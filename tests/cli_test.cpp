@@ -188,6 +188,8 @@ TEST(CliBadInput, UnknownPresetBackendAndValues) {
     expectCleanError(test::runVct("render --scene cornell --spot-angles 50,20" + kSmall + "--out /tmp/x.png"), "inner");
     expectCleanError(test::runVct("render --scene cornell" + kSmall + "--out /no/such/dir/x.png"), "/no/such/dir");
     expectCleanError(test::runVct("render --scene cornell --cone-rays 65" + kSmall + "--out /tmp/x.png"), "1..64");
+    expectCleanError(test::runVct("render --scene cornell --bounce-cone-rays 3" + kSmall + "--out /tmp/x.png"),
+                     "--bounce-cone-rays 3 is out of range");
     expectCleanError(test::runVct("render --scene cornell --sample-cones wide" + kSmall + "--out /tmp/x.png"),
                      "--sample-cones must be narrow or frame");
     expectCleanError(test::runVct("render --scene cornell --dark-material Red" + kSmall + "--out /tmp/x.png"),

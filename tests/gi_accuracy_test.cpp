@@ -52,6 +52,9 @@ constexpr double kNarrowWallRatio[2] = {0.85, 1.15};
 // 0.93x when reads across the axis out of empty nodes reached a whole spacing past the footprint.
 constexpr double kGalleryMean[2] = {0.95, 1.12}, kGalleryCells[2] = {0.85, 1.3};
 constexpr double kNarrowSecondBounce[2] = {0.8, 1.25};  // measured 1.03
+// Bounces 2 and 3 in a room lit through an opening (issue 13's 0.85..1.15 for a whole image):
+// measured 1.00 with narrow cones from the voxels, 0.64 with the cone set.
+constexpr double kFurtherBounces[2] = {0.85, 1.15};
 constexpr double kNarrowConeCountTolerance = 0.05;
 // Sixteen accumulated samples with narrow cones after the first, against sixteen of the cone set:
 // the narrow cones' error is the smaller by far (measured: docs/benchmark.md).
@@ -522,6 +525,39 @@ TEST(GiAccuracy, MoreBouncesFollowThePathTracerOnCornell) {
     const IndirectPair parts{bench::subtractImages(final, direct), bench::subtractImages(readHdrImage(full), readHdrImage(referenceDirect))};
     expectIndirectWithin(parts, "Cornell 96x72, 2 bounces", kCornellMean[0], kCornellMean[1], kCornellCells[0],
                          kCornellCells[1]);
+}
+
+TEST(GiAccuracy, FurtherBouncesThroughAnOpeningMatchThePathTracer) {
+    // Two rooms under a roof over one of them, the sun straight down into the other: everything
+    // the roofed room receives comes through the opening between them, and the bounces after the
+    // first are light its own walls, floor and ceiling pass on to each other. The further bounces
+    // are the 3-bounce image less the 1-bounce one, engine and path tracer alike. Gathered with
+    // the cone set, they came to 0.64× the path tracer's (render/cone_trace.hpp, kDefaultBounceRays).
+    const auto dir = test::testDir();
+    const std::string view =
+        "--scene " + (std::filesystem::path(VCT_SOURCE_DIR) / "benchmarks/scenes/two_rooms_no_wall.obj").string() +
+        " --sun-dir 0,-1,0.05 --sun-irradiance 10 --eye 4.3,2,0 --target 8,1.5,0 --fov 70 --width 96 --height 54";
+    auto meanLuminance = [](const ImageF& image) {
+        double sum = 0.0;
+        for (std::size_t i = 0; i < image.rgba.size(); i += 4)
+            sum += 0.2126 * image.rgba[i] + 0.7152 * image.rgba[i + 1] + 0.0722 * image.rgba[i + 2];
+        return sum / (double(image.width) * image.height);
+    };
+    double engine[2], traced[2];
+    for (int i = 0; i < 2; ++i) {
+        const std::string bounces = i == 0 ? "1" : "3";
+        engine[i] = meanLuminance(render(dir, "engine" + bounces, view + " --bounces " + bounces));
+        const auto out = dir / ("reference" + bounces + ".pfm");
+        const test::CommandResult r =
+            test::runVct("reference -q " + view + " --spp 64 --bounces " + bounces + " -o " + out.string());
+        ASSERT_EQ(r.exitCode, 0) << r.output;
+        traced[i] = meanLuminance(readHdrImage(out));
+    }
+    const double further = (engine[1] - engine[0]) / (traced[1] - traced[0]);
+    std::printf("[ accuracy ] two rooms, bounces 2 and 3: %.3f× the path tracer's (first bounce %.3f×)\n", further,
+                engine[0] / traced[0]);
+    EXPECT_GE(further, kFurtherBounces[0]);
+    EXPECT_LE(further, kFurtherBounces[1]);
 }
 
 TEST(GiAccuracy, IndirectLightMatchesThePathTracerOnCornell) {

@@ -82,7 +82,7 @@ const std::vector<std::string>& parameterNames() {
                                                    "cone_offset",  "cone_lift",      "bricks",        "light_view_res",
                                                    "pcf_radius",   "gi",             "bounces",       "samples",
                                                    "gi_resolution", "shadow_res",    "gi_filter",     "cone_rays",
-                                                   "sample_cones", "cone_reuse"};
+                                                   "sample_cones", "cone_reuse",     "bounce_cone_rays"};
     return names;
 }
 
@@ -96,6 +96,9 @@ void applyParameter(PointSettings& s, const std::string& name, const Json& v) {
         s.cones.cones = n;
     } else if (name == "cone_rays") {
         s.cones.rays = integer(v, what, 0, 64);
+        validateConeSettings(s.cones);
+    } else if (name == "bounce_cone_rays") {
+        s.cones.bounceRays = integer(v, what, 0, kMaxBounceRays);
         validateConeSettings(s.cones);
     } else if (name == "sample_cones") {
         if (!v.is_string()) fail(what, " must be \"narrow\" or \"frame\"");
@@ -151,6 +154,7 @@ std::string parameterValue(const PointSettings& s, const std::string& name) {
     if (name == "voxel_levels") return std::to_string(s.voxelLevels);
     if (name == "cones") return std::to_string(s.cones.cones);
     if (name == "cone_rays") return std::to_string(s.cones.rays);
+    if (name == "bounce_cone_rays") return std::to_string(s.cones.bounceRays);
     if (name == "sample_cones") return sampleConesName(s.cones.narrowConesAfterFirstSample);
     if (name == "cone_reuse") return formatNumber(s.cones.reuseVoxels);
     if (name == "cone_aperture") return formatNumber(s.cones.apertureScale);

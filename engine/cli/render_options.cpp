@@ -46,6 +46,10 @@ void addRenderSettingsOptions(CLI::App& command, RenderSettingsOptions& o) {
                        "narrow cones per traced pixel (1..64), or 0: the cone set (--cones), about 2.6x faster "
                        "to trace than 4 narrow cones and further from the path tracer")
         ->capture_default_str();
+    command.add_option("--bounce-cone-rays", o.cones.bounceRays,
+                       "narrow cones per side of each voxel that gathers a further bounce (--bounces), or 0: the "
+                       "cone set (--cones), whose wide cones lose a third of each further bounce across a room")
+        ->capture_default_str();
     command.add_option("--cone-reuse", o.cones.reuseVoxels,
                        "narrow cones shared between neighbouring traced pixels: sigma in voxels of the weight a "
                        "neighbour's cones get by its distance (0: every traced pixel keeps its own cones); it lowers "

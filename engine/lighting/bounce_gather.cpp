@@ -24,10 +24,12 @@ void BounceGather::run(const Octree& octree, RadianceVolume& volume, RadianceFil
                        const ConeSettings& cones) {
     const std::size_t cells = octree.cellCount();
     const std::size_t vec4s = cells * 16;  // one vec4 per cell
-    // Radiance (one vec4 per cell), exit shares (two), gathered irradiance (two).
-    if (baseBytes_ != 5 * vec4s) {
-        base_ = gl::createBuffer(GLsizeiptr(5 * vec4s), nullptr, 0, "first-bounce radiance, gathered irradiance");
-        baseBytes_ = 5 * vec4s;
+    // The first bounce's radiance (one vec4 per cell) and exit shares (two), the gathered
+    // irradiance (two), this bounce's radiance (one) and exit shares (two): bounce_gather.comp.
+    if (baseBytes_ != 8 * vec4s) {
+        base_ = gl::createBuffer(GLsizeiptr(8 * vec4s), nullptr, 0,
+                                 "first-bounce radiance, gathered irradiance, the bounce's radiance");
+        baseBytes_ = 8 * vec4s;
         listBytes_ = 4 * std::max<std::size_t>(cells, 1);
         ownGatherCells_ = gl::createBuffer(GLsizeiptr(listBytes_), nullptr, 0, "cells that gather their own bounce");
     }
@@ -37,7 +39,13 @@ void BounceGather::run(const Octree& octree, RadianceVolume& volume, RadianceFil
     constexpr GLbitfield kBarrier = GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT;
     const ConeSettings bounceCones = voxelGatherCones(cones);
     const Gathers& gather = gathers(coneLanes(bounceCones));
+    const GLintptr bounceRadiance = GLintptr(5 * vec4s), bounceShares = GLintptr(6 * vec4s);
     for (int bounce = 2; bounce <= bounces; ++bounce) {
+        // The cones read the last bounce's radiance, the gathers write this one's beside it: a cell
+        // that stores nothing keeps the last bounce's.
+        gl::memoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);
+        glCopyNamedBufferSubData(volume.cellRadiance.id(), base_.id(), 0, bounceRadiance, GLsizeiptr(vec4s));
+        glCopyNamedBufferSubData(volume.cellExitShares.id(), base_.id(), 0, bounceShares, GLsizeiptr(2 * vec4s));
         clearListCounts(volume, gl::BOUNCE_LIST_COUNT_SLOT, gl::SECOND_SHARE_COUNT_SLOT + 1);
         // First children (one per leaf node), then their siblings (one per cell), which read what
         // the first children gathered or list themselves, then the listed cells, then the cells
@@ -56,6 +64,10 @@ void BounceGather::run(const Octree& octree, RadianceVolume& volume, RadianceFil
         prepare(shareWithSiblings_).dispatch1D(std::uint32_t(cells), 64, kBarrier);
         listDispatch_.dispatch(prepare(gather.listed), volume, gl::BOUNCE_LIST_COUNT_SLOT, kBarrier);
         listDispatch_.dispatch(prepare(shareWithSecond_), volume, gl::SECOND_SHARE_COUNT_SLOT, kBarrier);
+        gl::memoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);
+        glCopyNamedBufferSubData(base_.id(), volume.cellRadiance.id(), bounceRadiance, 0, GLsizeiptr(vec4s));
+        glCopyNamedBufferSubData(base_.id(), volume.cellExitShares.id(), bounceShares, 0, GLsizeiptr(2 * vec4s));
+        gl::memoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);
         filter.leaves(octree, volume);
         filter.mip(octree, volume);
     }

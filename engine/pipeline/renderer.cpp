@@ -171,7 +171,7 @@ std::vector<MemoryPool> Renderer::memory() const {
     if (frame_.radiance)
         pools.push_back({"radiance volume (voxels, lists, six radiance pools)",
                          frame_.radiance->bytes()});
-    if (frame_.bounces) pools.push_back({"first-bounce radiance (for further bounces)", frame_.bounces->bytes()});
+    if (frame_.bounces) pools.push_back({"first-bounce radiance and the bounce being gathered (further bounces)", frame_.bounces->bytes()});
     if (frame_.coneTrace) pools.push_back({"indirect irradiance", frame_.coneTrace->bytes()});
     if (frame_.voxelView) pools.push_back({"voxel view", frame_.voxelView->bytes()});
     if (frame_.coneView) pools.push_back({"cone view", frame_.coneView->bytes()});

@@ -103,6 +103,9 @@ void validateConeSettings(const ConeSettings& s) {
         fail("--cone-lift ", s.lift, " is out of range; use 0..4 (normal offset per unit of cone diameter)");
     if (s.rays < 0 || s.rays > kMaxNarrowCones)
         fail("--cone-rays ", s.rays, " is out of range; use 1..", kMaxNarrowCones, " narrow cones (0: the cone set)");
+    if (s.bounceRays < 0 || s.bounceRays > kMaxBounceRays)
+        fail("--bounce-cone-rays ", s.bounceRays, " is out of range; use 1..", kMaxBounceRays,
+             " narrow cones per side of a voxel (0: the cone set)");
     if (s.onlyCone < -1 || s.onlyCone >= s.cones)
         fail("--only-cone ", s.onlyCone, " is not a cone of the ", s.cones, "-cone set; use 0..", s.cones - 1,
              " (0 is the cone along the normal)");
@@ -180,7 +183,8 @@ bool reusesCones(const ConeSettings& settings) {
 }
 
 ConeSettings voxelGatherCones(ConeSettings settings) {
-    settings.rays = 0;
+    settings.rays = settings.bounceRays;
+    if (settings.rays > 0) settings.cones = ConeSettings{}.cones;  // the set is not traced: no reason to gather again
     settings.narrowConesAfterFirstSample = ConeSettings{}.narrowConesAfterFirstSample;
     settings.reuseVoxels = ConeSettings{}.reuseVoxels;
     settings.carryVoxels = ConeSettings{}.carryVoxels;

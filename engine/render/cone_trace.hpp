@@ -41,6 +41,17 @@ constexpr float kNarrowConeStep = 1.0f;
 // LP_MAX_TGSI_LOOP_ITERATIONS, shared by every loop), silently: a pixel's sixteen narrow cones
 // in one invocation lost the light of those past the first fifteen or so. Four stay well inside.
 constexpr int kNarrowConesPerDispatch = 4;
+// The most narrow cones per side of a gathering voxel: an invocation gathers both sides, so two
+// per side keep its cones within kNarrowConesPerDispatch.
+constexpr int kMaxBounceRays = kNarrowConesPerDispatch / 2;
+// Narrow cones per side of a voxel that gathers a further bounce (`--bounce-cone-rays`; 0: the
+// cone set). The set's wide cones, marched from voxels across a room, read coarse nodes that hold
+// the walls beside their path and stop there: a room lit only through an opening lost about a
+// third of every further bounce, and its ceiling's voxels nearly all of theirs. Narrow cones from
+// the voxels come close to the path tracer. Each voxel's few cones are noisy, but the camera's
+// cones read the voxels' light averaged over their footprints, and two per side measured as close
+// as sixteen (docs/benchmark.md, "Further bounces with narrow cones").
+constexpr int kDefaultBounceRays = kMaxBounceRays;
 
 // A traced pixel's irradiance takes the narrow cones of the traced pixels around it as well as its
 // own (render/cone_reuse.hpp): those of a window of 5×5 traced cells whose cones start on the same
@@ -71,6 +82,10 @@ struct ConeSettings {
     // refinement): one narrow cone each (conesForSample; true, the default) or the frame's cones
     // again (`--sample-cones frame`).
     bool narrowConesAfterFirstSample = true;
+    // Narrow cones per side of each voxel that gathers a further bounce (`--bounce-cone-rays`,
+    // kDefaultBounceRays); 0: the cone set (`cones`). Frame cones and bounce cones are separate:
+    // voxelGatherCones makes the gathers' settings from these.
+    int bounceRays = kDefaultBounceRays;
     // Narrow cones shared between neighbouring traced pixels (`--cone-reuse`, shaders/cone_reuse.comp):
     // σ in voxels of the weight a neighbour's cones get by its distance; 0: each pixel its own.
     float reuseVoxels = kDefaultConeReuseVoxels;

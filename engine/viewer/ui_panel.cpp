@@ -196,6 +196,8 @@ void settingsSection(ViewerState& state, bool& changed) {
                      ImGuiSliderFlags_AlwaysClamp);
     changed |= ImGui::Checkbox("GI (G)", &s.gi);
     changed |= ImGui::SliderInt("bounces (N)", &s.bounces, 1, kMaxBounces, "%d", ImGuiSliderFlags_AlwaysClamp);
+    changed |= ImGui::SliderInt("narrow cones per voxel side, bounces (0 = the cone set)", &s.cones.bounceRays, 0,
+                                kMaxBounceRays, "%d", ImGuiSliderFlags_AlwaysClamp);
     ImGui::SameLine();
     changed |= ImGui::Checkbox("photons (P)", &s.photons);
     ImGui::SameLine();
