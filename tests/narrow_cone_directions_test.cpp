@@ -77,7 +77,11 @@ TEST(NarrowConeDirections, EachKindOfConeStepsByItsOwnLengthUnlessOneIsGiven) {
     EXPECT_EQ(coneStep(s), kConeSetStep);
     s.step = 0.75f;
     EXPECT_EQ(coneStep(s), 0.75f);
-    EXPECT_EQ(coneStep(voxelGatherCones(ConeSettings{})), kConeSetStep);  // the bounces' gathers trace the set
+    // The bounces' gathers trace narrow cones unless they are told to trace the set.
+    EXPECT_EQ(coneStep(voxelGatherCones(ConeSettings{})), kNarrowConeStep);
+    ConeSettings set;
+    set.bounceRays = 0;
+    EXPECT_EQ(coneStep(voxelGatherCones(set)), kConeSetStep);
 }
 
 TEST(NarrowConeDirections, SamplesContinueOneEvenlySpreadSequence) {
