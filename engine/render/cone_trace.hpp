@@ -48,10 +48,11 @@ constexpr int kMaxBounceRays = kNarrowConesPerDispatch / 2;
 // cone set). The set's wide cones, marched from voxels across a room, read coarse nodes that hold
 // the walls beside their path and stop there: a room lit only through an opening lost about a
 // third of every further bounce, and its ceiling's voxels nearly all of theirs. Narrow cones from
-// the voxels come close to the path tracer. Each voxel's few cones are noisy, but the camera's
-// cones read the voxels' light averaged over their footprints, and two per side measured as close
-// as sixteen (docs/benchmark.md, "Further bounces with narrow cones").
-constexpr int kDefaultBounceRays = kMaxBounceRays;
+// the voxels come close to the path tracer. Each voxel's one cone per side is noisy, but the
+// camera's cones read the voxels' light averaged over their footprints: one per side measured as
+// close as two or sixteen, and gathers cheaper than the cone set's (docs/benchmark.md, "Further
+// bounces with narrow cones").
+constexpr int kDefaultBounceRays = 1;
 
 // A traced pixel's irradiance takes the narrow cones of the traced pixels around it as well as its
 // own (render/cone_reuse.hpp): those of a window of 5×5 traced cells whose cones start on the same
