@@ -199,7 +199,7 @@ TEST(CliBadInput, UnknownPresetBackendAndValues) {
 }
 
 TEST(CliBadInput, OutputNamesMustSayTheirFormat) {
-    // A PNG named a.bmp was written before; every output is refused up front instead.
+    // Every output whose name says another format than the one written is refused up front.
     expectCleanError(test::runVct("render --scene cornell" + kSmall + "--out /tmp/x.bmp"), "--out writes a PNG image");
     expectCleanError(test::runVct("render --scene cornell" + kSmall + "--out /tmp/x.png --hdr-out /tmp/x.tiff"),
                      "--hdr-out writes linear HDR");

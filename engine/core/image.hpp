@@ -45,9 +45,9 @@ void validateImageSize(int width, int height, const char* what = "image size");
 
 // Throws a clear error when `path`'s folder does not exist or is not writable.
 void ensureWritable(const std::filesystem::path& path);
-// ensureWritable, and the name must say the format written there: `.png` for the tone-mapped
-// images, `.pfm`/`.exr` for linear ones (a PNG named a.bmp was written before). `option` names the
-// flag in the message.
+// ensureWritable, and the name must say the format written there (`.png` for the tone-mapped
+// images, `.pfm`/`.exr` for linear ones), so that whatever opens the file reads it as what it is.
+// `option` names the flag in the message.
 void ensureWritablePng(const std::filesystem::path& path, const char* option);
 void ensureWritableHdr(const std::filesystem::path& path, const char* option);
 
