@@ -538,21 +538,15 @@ TEST(GiAccuracy, FurtherBouncesThroughAnOpeningMatchThePathTracer) {
     const std::string view =
         "--scene " + (std::filesystem::path(VCT_SOURCE_DIR) / "benchmarks/scenes/two_rooms_no_wall.obj").string() +
         " --sun-dir 0,-1,0.05 --sun-irradiance 10 --eye 4.3,2,0 --target 8,1.5,0 --fov 70 --width 96 --height 54";
-    auto meanLuminance = [](const ImageF& image) {
-        double sum = 0.0;
-        for (std::size_t i = 0; i < image.rgba.size(); i += 4)
-            sum += 0.2126 * image.rgba[i] + 0.7152 * image.rgba[i + 1] + 0.0722 * image.rgba[i + 2];
-        return sum / (double(image.width) * image.height);
-    };
     double engine[2], traced[2];
     for (int i = 0; i < 2; ++i) {
         const std::string bounces = i == 0 ? "1" : "3";
-        engine[i] = meanLuminance(render(dir, "engine" + bounces, view + " --bounces " + bounces));
+        engine[i] = test::meanRgb(render(dir, "engine" + bounces, view + " --bounces " + bounces));
         const auto out = dir / ("reference" + bounces + ".pfm");
         const test::CommandResult r =
             test::runVct("reference -q " + view + " --spp 64 --bounces " + bounces + " -o " + out.string());
         ASSERT_EQ(r.exitCode, 0) << r.output;
-        traced[i] = meanLuminance(readHdrImage(out));
+        traced[i] = test::meanRgb(readHdrImage(out));
     }
     const double further = (engine[1] - engine[0]) / (traced[1] - traced[0]);
     std::printf("[ accuracy ] two rooms, bounces 2 and 3: %.3f× the path tracer's (first bounce %.3f×)\n", further,

@@ -51,10 +51,11 @@ std::size_t estimateVoxelBytes(const Scene& scene, int levels, bool radiance, bo
     // Radiance: accumulators, cell radiance and direction, flags; per node flags and lists and the
     // six radiance pools of 27 RGBA32F samples (brick_layout.hpp, "Slabs").
     if (radiance) bytes += cells * (4 * gl::RADIANCE_ACCUMULATOR_WORDS + 16 + 32 + 8) + nodes * (8 + 8 + 6 * 27 * 16);
-    // The first bounce's radiance and direction, the irradiance first children gather and the list
-    // of cells that gather their own (bounce_gather).
-    // With the voxels' radiance and direction after the last bounce (narrow cones read them).
-    if (radiance && bounces) bytes += cells * (80 + 4 + 48);
+    // The first bounce's radiance and direction, the irradiance first children gather, the radiance
+    // and direction of the bounce being gathered (bounce_gather, 128 in all) and the list of cells
+    // that gather their own; the voxels' radiance and direction after the last bounce (narrow cones
+    // read them).
+    if (radiance && bounces) bytes += cells * (128 + 4 + 48);
     return std::size_t(bytes * 1.1);  // brick pools are rounded up to whole rows and slabs
 }
 
