@@ -269,6 +269,38 @@ TEST(PathTracer, ConeRegionsAddUpToTheIndirectLight) {
     EXPECT_GT(meanChannel(whole, 0), 0.0);
 }
 
+// `--first-bounce-distance MIN,MAX` keeps the light whose first bounce meets its surface in
+// [MIN, MAX): two ranges that meet split the indirect light exactly (one seed), and in the Cornell
+// box (2 units wide) both the near field (a corner's walls within half a unit of each other) and
+// the rest hold light.
+TEST(PathTracer, FirstBounceDistancesSplitTheIndirectLight) {
+    const auto dir = test::testDir();
+    const std::string common = "--scene cornell --width 32 --height 24 --spp 16 --bounces 1";
+    renderReference(common + " --indirect-out " + path(dir / "i.pfm"), dir / "all.pfm");
+    const ImageF indirect = readHdrImage(dir / "i.pfm");
+    double total = 0.0;
+    for (int c = 0; c < 3; ++c) total += meanChannel(indirect, c);
+    const std::pair<const char*, const char*> ranges[] = {{"near", "0,0.5"}, {"far", "0.5,inf"}};
+    ImageF sum = indirect;
+    std::fill(sum.rgba.begin(), sum.rgba.end(), 0.0f);
+    for (const auto& [name, range] : ranges) {
+        const auto out = dir / (std::string(name) + ".pfm");
+        renderReference(common + " --first-bounce-distance " + range + " --indirect-out " + path(out), dir / "x.pfm");
+        const ImageF part = readHdrImage(out);
+        double share = 0.0;
+        for (int c = 0; c < 3; ++c) share += meanChannel(part, c);
+        std::printf("[ first bounce ] %s (%s): %.3f of the indirect light\n", name, range, share / total);
+        EXPECT_GT(share, 0.05 * total) << name;
+        EXPECT_LT(share, 0.95 * total) << name;
+        for (std::size_t i = 0; i < sum.rgba.size(); ++i) sum.rgba[i] += part.rgba[i];
+    }
+    double worst = 0.0;
+    for (int y = 0; y < sum.height; ++y)
+        for (int x = 0; x < sum.width; ++x)
+            for (int c = 0; c < 3; ++c) worst = std::max(worst, double(std::abs(sum.at(x, y)[c] - indirect.at(x, y)[c])));
+    EXPECT_LT(worst, 1e-5) << "every first bounce lies in exactly one range";
+}
+
 TEST(PathTracer, BadOptionsEndInOneClearError) {
     const auto dir = test::testDir();
     const std::pair<std::string, std::string> cases[] = {
@@ -282,6 +314,9 @@ TEST(PathTracer, BadOptionsEndInOneClearError) {
         {"--tonemap filmic", "tone curve"},
         {"--cone-region 5", "--cone-region"},
         {"--cone-region 0 --cones 7", "--cones 7"},
+        {"--first-bounce-distance 2,1", "--first-bounce-distance"},
+        {"--first-bounce-distance -1,1", "--first-bounce-distance"},
+        {"--first-bounce-distance 1", "--first-bounce-distance"},
     };
     for (const auto& [options, mentions] : cases) {
         std::string args = "reference --scene cornell --height 8 " + options;

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <cstdio>
 #include <thread>
+#include <vector>
 
 #include "cli/commands.hpp"
 #include "cli/scene_options.hpp"
@@ -20,6 +21,7 @@ struct ReferenceOptions {
     std::string out = "reference.pfm";
     std::string png, directOut, indirectOut, varianceOut;
     std::optional<int> spp;
+    std::vector<double> firstBounceDistance;
     reference::ReferenceSettings settings;
     std::optional<double> exposureEV;
     std::string toneCurve = "aces";
@@ -29,6 +31,12 @@ void run(ReferenceOptions& o) {
     // Everything the user can get wrong, before the expensive steps.
     reference::ReferenceSettings settings = o.settings;
     settings.samplesPerPixel = o.spp.value_or(settings.timeLimitSeconds > 0 ? reference::kUnlimitedSpp : 16);
+    if (!o.firstBounceDistance.empty()) {
+        if (o.firstBounceDistance.size() != 2)
+            fail("--first-bounce-distance needs two numbers: MIN,MAX (world units; MAX may be inf)");
+        settings.firstBounceNearest = float(o.firstBounceDistance[0]);
+        settings.firstBounceFarthest = float(o.firstBounceDistance[1]);
+    }
     reference::validate(settings);
     const TonemapCurve curve = parseTonemapCurve(o.toneCurve);
     const std::pair<const std::string*, const char*> hdrOutputs[] = {
@@ -97,6 +105,13 @@ Run addReferenceCommand(CLI::App& app) {
         ->capture_default_str();
     command->add_option("--cones", s.coneRegionSet, "the cone set whose regions --cone-region names: 1, 5, 6, 9 or 16")
         ->capture_default_str();
+    command
+        ->add_option("--first-bounce-distance", o.firstBounceDistance,
+                     "diagnostic: count only light whose first bounce meets a surface MIN to MAX world units from the "
+                     "pixel's surface (e.g. 0,0.3: the near field that the engine's cones, starting 1.5 voxels off "
+                     "the surface, do not see); default: every distance")
+        ->delimiter(',')
+        ->type_name("MIN,MAX");
     command->add_flag("--center-only", s.centerOnly,
                       "every sample through the pixel centre (no antialiasing), as the rasterizer samples");
     command->add_option("--exposure", o.exposureEV, "exposure in stops (EV) of --png; default: the scene's");

@@ -54,6 +54,7 @@ RadianceSample PathTracer::trace(const Ray& cameraRay, Pcg32& rng) const {
         if (glm::dot(direction, geometric) <= 0.0f) break;
         hit = rays_.intersect(hit->spawnPoint(direction), direction);
         if (!hit) break;  // left the scene: the sky is black
+        if (bounce == 1 && !firstBounceDistance_.keeps(hit->distance)) break;
         geometric = facing(hit->geometricNormal, direction);
         normal = onSideOf(hit->shadingNormal, geometric);
         albedo = materials_.albedo(hit->material, hit->uv, hit->uv1, hit->color);

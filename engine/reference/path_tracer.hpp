@@ -27,6 +27,8 @@
 // which side light may come from and leave to: light behind the triangle and bounce directions
 // into it count 0, so interpolated normals that tilt past a wall (smoothed box corners) cannot
 // leak light through it.
+#include <limits>
+
 #include <glm/glm.hpp>
 
 #include "reference/camera_rays.hpp"
@@ -51,11 +53,26 @@ struct ConeRegionFilter {
     int region = -1;
 };
 
+// Which first bounces count (`vct reference --first-bounce-distance`): those whose ray meets its
+// surface at a distance in [nearest, farthest) from the pixel's surface, in world units. The cones
+// of the engine start a voxel and a half off the surface: light reflected by surfaces closer than
+// that (a hem above a sunlit floor) is the near field they cannot see, and this splits it out.
+struct FirstBounceDistanceFilter {
+    float nearest = 0.0f;
+    float farthest = std::numeric_limits<float>::infinity();
+    bool keeps(float distance) const { return distance >= nearest && distance < farthest; }
+};
+
 class PathTracer {
 public:
     PathTracer(const RayScene& rays, const MaterialTable& materials, const DeltaLights& lights, int bounces,
-               ConeRegionFilter coneRegion = {})
-        : rays_(rays), materials_(materials), lights_(lights), bounces_(bounces), coneRegion_(coneRegion) {}
+               ConeRegionFilter coneRegion = {}, FirstBounceDistanceFilter firstBounceDistance = {})
+        : rays_(rays),
+          materials_(materials),
+          lights_(lights),
+          bounces_(bounces),
+          coneRegion_(coneRegion),
+          firstBounceDistance_(firstBounceDistance) {}
 
     RadianceSample trace(const Ray& cameraRay, Pcg32& rng) const;
 
@@ -70,6 +87,7 @@ private:
     const DeltaLights& lights_;
     int bounces_;
     ConeRegionFilter coneRegion_;
+    FirstBounceDistanceFilter firstBounceDistance_;
 };
 
 }  // namespace vct::reference

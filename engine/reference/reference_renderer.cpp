@@ -62,6 +62,9 @@ void validate(const ReferenceSettings& s) {
     } else if (s.coneRegion != -1) {
         fail("--cone-region ", s.coneRegion, " is out of range; use -1 (every direction) or a cone of the set");
     }
+    if (!(s.firstBounceNearest >= 0.0f) || !(s.firstBounceFarthest > s.firstBounceNearest))
+        fail("--first-bounce-distance ", s.firstBounceNearest, ",", s.firstBounceFarthest,
+             " is not a range of distances; give MIN,MAX with 0 <= MIN < MAX (world units; MAX may be inf)");
 }
 
 ReferenceResult renderReference(const Scene& scene, const Camera& camera, const ReferenceSettings& settings) {
@@ -70,7 +73,8 @@ ReferenceResult renderReference(const Scene& scene, const Camera& camera, const 
     const MaterialTable materials(scene);
     const RayScene rays(scene, materials);
     const DeltaLights lights(scene);
-    const PathTracer tracer(rays, materials, lights, settings.bounces, {settings.coneRegionSet, settings.coneRegion});
+    const PathTracer tracer(rays, materials, lights, settings.bounces, {settings.coneRegionSet, settings.coneRegion},
+                            {settings.firstBounceNearest, settings.firstBounceFarthest});
     const CameraRays cameraRays(camera, scene, settings.width, settings.height);
 
     ReferenceResult result;

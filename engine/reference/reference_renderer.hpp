@@ -39,6 +39,10 @@ struct ReferenceSettings {
     // cone set of `coneRegionSet` cones (render/cone_set.hpp coneRegionOf; −1: every direction).
     int coneRegion = -1;
     int coneRegionSet = 5;
+    // Diagnostic: count only the light whose first bounce meets its surface at a distance in
+    // [firstBounceNearest, firstBounceFarthest) world units (PathTracer's FirstBounceDistanceFilter).
+    float firstBounceNearest = 0.0f;
+    float firstBounceFarthest = std::numeric_limits<float>::infinity();
 };
 
 struct ReferenceResult {
