@@ -238,35 +238,53 @@ TEST(PathTracer, DirectPlusIndirectIsTheImageAndTimeLimitStops) {
     }
 }
 
+namespace {
+
+// The indirect light of `common`, whole and once with each of `filters` (options that keep a
+// part of it), all with one seed: each part's share of the whole, and the largest difference
+// between the parts' sum and the whole over every pixel and channel.
+struct IndirectSplit {
+    std::vector<double> shares;
+    double largestDifference = 0.0;
+};
+IndirectSplit splitIndirectLight(const std::string& common, const std::vector<std::string>& filters) {
+    const auto dir = test::testDir();
+    auto luminanceSum = [](const ImageF& image) {
+        return meanChannel(image, 0) + meanChannel(image, 1) + meanChannel(image, 2);
+    };
+    renderReference(common + " --indirect-out " + path(dir / "whole.pfm"), dir / "x.pfm");
+    const ImageF whole = readHdrImage(dir / "whole.pfm");
+    ImageF sum = whole;
+    std::fill(sum.rgba.begin(), sum.rgba.end(), 0.0f);
+    IndirectSplit split;
+    for (const std::string& filter : filters) {
+        renderReference(common + " " + filter + " --indirect-out " + path(dir / "part.pfm"), dir / "x.pfm");
+        const ImageF part = readHdrImage(dir / "part.pfm");
+        split.shares.push_back(luminanceSum(part) / luminanceSum(whole));
+        std::printf("[ split ] %s: %.3f of the indirect light\n", filter.c_str(), split.shares.back());
+        for (std::size_t i = 0; i < sum.rgba.size(); ++i) sum.rgba[i] += part.rgba[i];
+    }
+    for (int y = 0; y < sum.height; ++y)
+        for (int x = 0; x < sum.width; ++x)
+            for (int c = 0; c < 3; ++c)
+                split.largestDifference =
+                    std::max(split.largestDifference, double(std::abs(sum.at(x, y)[c] - whole.at(x, y)[c])));
+    return split;
+}
+
+}  // namespace
+
 // `--cone-region K` keeps the light whose first bounce leaves in region K of the engine's cone
 // set: the regions partition the hemisphere, so with one seed the five images add up to the
 // whole indirect light, and each region holds light (the Cornell box is lit all around).
 TEST(PathTracer, ConeRegionsAddUpToTheIndirectLight) {
-    const auto dir = test::testDir();
-    const std::string common = "--scene cornell --width 32 --height 24 --spp 16 --bounces 1";
-    const ImageF whole = renderReference(common + " --indirect-out " + path(dir / "i.pfm"), dir / "all.pfm");
-    const ImageF indirect = readHdrImage(dir / "i.pfm");
-    ImageF sum = indirect;
-    std::fill(sum.rgba.begin(), sum.rgba.end(), 0.0f);
-    double total = 0.0;
-    for (int c = 0; c < 3; ++c) total += meanChannel(indirect, c);
-    for (int region = 0; region < 5; ++region) {
-        const auto out = dir / ("r" + std::to_string(region) + ".pfm");
-        renderReference(common + " --cones 5 --cone-region " + std::to_string(region) + " --indirect-out " + path(out),
-                        dir / "x.pfm");
-        const ImageF part = readHdrImage(out);
-        double share = 0.0;
-        for (int c = 0; c < 3; ++c) share += meanChannel(part, c);
-        std::printf("[ cone regions ] region %d: %.3f of the indirect light\n", region, share / total);
-        EXPECT_GT(share, 0.02 * total) << "region " << region;
-        for (std::size_t i = 0; i < sum.rgba.size(); ++i) sum.rgba[i] += part.rgba[i];
-    }
-    double worst = 0.0;
-    for (int y = 0; y < sum.height; ++y)
-        for (int x = 0; x < sum.width; ++x)
-            for (int c = 0; c < 3; ++c) worst = std::max(worst, double(std::abs(sum.at(x, y)[c] - indirect.at(x, y)[c])));
-    EXPECT_LT(worst, 1e-5) << "every first bounce lies in exactly one region";
-    EXPECT_GT(meanChannel(whole, 0), 0.0);
+    std::vector<std::string> regions;
+    for (int region = 0; region < 5; ++region) regions.push_back("--cones 5 --cone-region " + std::to_string(region));
+    const IndirectSplit split =
+        splitIndirectLight("--scene cornell --width 32 --height 24 --spp 16 --bounces 1", regions);
+    for (std::size_t region = 0; region < regions.size(); ++region)
+        EXPECT_GT(split.shares[region], 0.02) << "region " << region;
+    EXPECT_LT(split.largestDifference, 1e-5) << "every first bounce lies in exactly one region";
 }
 
 // `--first-bounce-distance MIN,MAX` keeps the light whose first bounce meets its surface in
@@ -274,31 +292,13 @@ TEST(PathTracer, ConeRegionsAddUpToTheIndirectLight) {
 // box (2 units wide) both the near field (a corner's walls within half a unit of each other) and
 // the rest hold light.
 TEST(PathTracer, FirstBounceDistancesSplitTheIndirectLight) {
-    const auto dir = test::testDir();
-    const std::string common = "--scene cornell --width 32 --height 24 --spp 16 --bounces 1";
-    renderReference(common + " --indirect-out " + path(dir / "i.pfm"), dir / "all.pfm");
-    const ImageF indirect = readHdrImage(dir / "i.pfm");
-    double total = 0.0;
-    for (int c = 0; c < 3; ++c) total += meanChannel(indirect, c);
-    const std::pair<const char*, const char*> ranges[] = {{"near", "0,0.5"}, {"far", "0.5,inf"}};
-    ImageF sum = indirect;
-    std::fill(sum.rgba.begin(), sum.rgba.end(), 0.0f);
-    for (const auto& [name, range] : ranges) {
-        const auto out = dir / (std::string(name) + ".pfm");
-        renderReference(common + " --first-bounce-distance " + range + " --indirect-out " + path(out), dir / "x.pfm");
-        const ImageF part = readHdrImage(out);
-        double share = 0.0;
-        for (int c = 0; c < 3; ++c) share += meanChannel(part, c);
-        std::printf("[ first bounce ] %s (%s): %.3f of the indirect light\n", name, range, share / total);
-        EXPECT_GT(share, 0.05 * total) << name;
-        EXPECT_LT(share, 0.95 * total) << name;
-        for (std::size_t i = 0; i < sum.rgba.size(); ++i) sum.rgba[i] += part.rgba[i];
+    const IndirectSplit split = splitIndirectLight("--scene cornell --width 32 --height 24 --spp 16 --bounces 1",
+                                                   {"--first-bounce-distance 0,0.5", "--first-bounce-distance 0.5,inf"});
+    for (double share : split.shares) {
+        EXPECT_GT(share, 0.05);
+        EXPECT_LT(share, 0.95);
     }
-    double worst = 0.0;
-    for (int y = 0; y < sum.height; ++y)
-        for (int x = 0; x < sum.width; ++x)
-            for (int c = 0; c < 3; ++c) worst = std::max(worst, double(std::abs(sum.at(x, y)[c] - indirect.at(x, y)[c])));
-    EXPECT_LT(worst, 1e-5) << "every first bounce lies in exactly one range";
+    EXPECT_LT(split.largestDifference, 1e-5) << "every first bounce lies in exactly one range";
 }
 
 TEST(PathTracer, BadOptionsEndInOneClearError) {
