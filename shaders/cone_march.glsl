@@ -509,6 +509,18 @@ void storeConeSample(int k, vec3 direction, vec4 cone, bool traced) {
 }
 #endif
 
+// Whether the axis of a pixel's narrow cone meets a surface nearer than where the cone starts, and
+// what that surface sends back (near_field.glsl: the camera's cones, against the G-buffer); the
+// voxels' gathers have no G-buffer and meet nothing.
+#ifdef SCREEN_NEAR_FIELD
+bool nearFieldHit(vec3 direction, out vec4 seen);  // near_field.glsl
+#else
+bool nearFieldHit(vec3 direction, out vec4 seen) {
+    seen = vec4(0.0);
+    return false;
+}
+#endif
+
 // Narrow cones instead of the cone set (`--cone-rays`, and the later samples of an accumulated
 // frame): uRayCount cones, each of weight π/N, whose axes sample the cosine-weighted hemisphere
 // (sin²θ and azimuth uniform, narrow_cone_directions.glsl) shifted by `shift` (narrowConeShift).
@@ -516,7 +528,7 @@ void storeConeSample(int k, vec3 direction, vec4 cone, bool traced) {
 // are the geometry's own, so occlusion and light arrive from where the path tracer finds them; the
 // noise of N directions per pixel is what the upsampling, the edge-aware filter and the samples'
 // average remove. The share of a cone behind the triangle's plane is blocked by it, as in the
-// cone set.
+// cone set; a cone whose axis meets a surface before it starts takes that surface's light.
 vec4 gatherNarrowCones(vec3 origin, vec3 normal, vec3 surfaceNormal, vec2 shift) {
     vec3 tangent, bitangent;
     orthonormalBasis(normal, tangent, bitangent);
@@ -534,7 +546,7 @@ vec4 gatherNarrowCones(vec3 origin, vec3 normal, vec3 surfaceNormal, vec2 shift)
         if (uOnlyCone >= 0 && coneRegionOf(uConeCount, d) != uOnlyCone) continue;
         vec3 direction = normalize(d.x * tangent + d.y * bitangent + d.z * normal);
         vec4 cone = vec4(0.0, 0.0, 0.0, 1.0);
-        if (dot(direction, surfaceNormal) > 0.0) {
+        if (dot(direction, surfaceNormal) > 0.0 && !nearFieldHit(direction, cone)) {
             coneAxis = direction;
             coneSpread(direction, uRayTanHalfAngle, coneAlongPlus, coneAlongMinus);
             cone = traceCone(origin, normal, direction, uRayTanHalfAngle);

@@ -23,8 +23,6 @@ layout(local_size_x = 64, local_size_z = CONE_LANES) in;
 #include "cone_march.glsl"
 #include "cone_trace_common.glsl"
 
-layout(binding = TEXTURE_GBUFFER_NORMAL) uniform sampler2D uNormal;
-layout(binding = TEXTURE_GBUFFER_POSITION) uniform sampler2D uPosition;
 // The pixels to trace (packTracedPixel), one per listed cell, their count in coneCounters.
 layout(std430, binding = SSBO_TRACE_CELLS) readonly buffer TraceCells { uint traceCells[]; };
 

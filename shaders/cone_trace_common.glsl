@@ -3,7 +3,12 @@
 #include "cone_lanes.glsl"
 #include "cone_counters.glsl"
 
+layout(binding = TEXTURE_GBUFFER_NORMAL) uniform sampler2D uNormal;
+layout(binding = TEXTURE_GBUFFER_POSITION) uniform sampler2D uPosition;
 layout(binding = TEXTURE_GBUFFER_GEOMETRIC_NORMAL) uniform sampler2D uGeometricNormal;
+#ifdef SCREEN_NEAR_FIELD
+#include "near_field.glsl"
+#endif
 uniform int uDownscale;  // pixels per side of a traced block: 1 (every pixel), 2 or 4
 // Where the traced irradiance goes: the indirect image, or the traced blocks' image.
 layout(rgba32f, binding = IMAGE_INDIRECT) uniform image2D uIndirect;
@@ -24,6 +29,11 @@ void storeTraced(ivec2 at, vec4 traced) {
 // sequence of narrow-cone directions over the samples (narrowConeShift).
 vec4 gatherPixel(ivec2 pixel, vec3 position, vec3 normal) {
     enterConeLane();
+#ifdef SCREEN_NEAR_FIELD
+    nearFieldPoint = position;
+    nearFieldNormal = normal;
+    nearFieldJitter = hashToUnitSquare(vec3(vec2(pixel), float(uRaySequence))).x;
+#endif
     const vec3 origin = (position - uVoxelOrigin) * uVoxelScale + normal * uConeOffset;
     const vec4 gathered = gatherIrradiance(origin, normal, texelFetch(uGeometricNormal, pixel, 0).xyz,
                                            narrowConeShift(pixel / uDownscale));

@@ -20,8 +20,6 @@ layout(local_size_x = 8, local_size_y = 8) in;
 #include "cone_march.glsl"
 #include "cone_trace_common.glsl"
 
-layout(binding = TEXTURE_GBUFFER_NORMAL) uniform sampler2D uNormal;
-layout(binding = TEXTURE_GBUFFER_POSITION) uniform sampler2D uPosition;
 layout(binding = TEXTURE_TRACED_IRRADIANCE) uniform sampler2D uTraced;
 layout(binding = TEXTURE_TRACED_PIXEL) uniform usampler2D uTracedPixel;
 

@@ -82,7 +82,7 @@ const std::vector<std::string>& parameterNames() {
                                                    "cone_offset",  "cone_lift",      "bricks",        "light_view_res",
                                                    "pcf_radius",   "gi",             "bounces",       "samples",
                                                    "gi_resolution", "shadow_res",    "gi_filter",     "cone_rays",
-                                                   "sample_cones", "cone_reuse",     "bounce_cone_rays"};
+                                                   "sample_cones", "cone_reuse",     "bounce_cone_rays", "near_field"};
     return names;
 }
 
@@ -109,6 +109,8 @@ void applyParameter(PointSettings& s, const std::string& name, const Json& v) {
         }
     } else if (name == "cone_reuse") {
         s.cones.reuseVoxels = float(number(v, what, 0.0, 64.0));
+    } else if (name == "near_field") {
+        s.cones.nearField = boolean(v, what);
     } else if (name == "cone_aperture") {
         s.cones.apertureScale = float(number(v, what, 1e-3, 4.0));
     } else if (name == "cone_step") {
@@ -157,6 +159,7 @@ std::string parameterValue(const PointSettings& s, const std::string& name) {
     if (name == "bounce_cone_rays") return std::to_string(s.cones.bounceRays);
     if (name == "sample_cones") return sampleConesName(s.cones.narrowConesAfterFirstSample);
     if (name == "cone_reuse") return formatNumber(s.cones.reuseVoxels);
+    if (name == "near_field") return s.cones.nearField ? "true" : "false";
     if (name == "cone_aperture") return formatNumber(s.cones.apertureScale);
     if (name == "cone_step") return formatNumber(s.cones.step);
     if (name == "cone_offset") return formatNumber(s.cones.offset);

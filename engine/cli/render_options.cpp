@@ -50,6 +50,11 @@ void addRenderSettingsOptions(CLI::App& command, RenderSettingsOptions& o) {
                        "narrow cones per side of each voxel that gathers a further bounce (--bounces), or 0: the "
                        "cone set (--cones), whose wide cones lose a third of each further bounce across a room")
         ->capture_default_str();
+    command.add_option("--near-field", o.nearField,
+                       "before each narrow cone of a pixel is traced, follow its axis against the G-buffer to where "
+                       "the cone starts (1.5 voxels off the surface): a surface met there takes the cone's place, with "
+                       "its direct light, and blocks it (on), or the cones alone (off)")
+        ->capture_default_str();
     command.add_option("--cone-reuse", o.cones.reuseVoxels,
                        "narrow cones shared between neighbouring traced pixels: sigma in voxels of the weight a "
                        "neighbour's cones get by its distance (0: every traced pixel keeps its own cones); it lowers "
@@ -107,6 +112,8 @@ RenderSettings renderSettingsFromOptions(const RenderSettingsOptions& o, const S
     settings.photons = !o.noPhotons;
     settings.bounces = o.bounces;
     settings.cones = o.cones;
+    if (o.nearField != "on" && o.nearField != "off") fail("--near-field must be on or off, not '", o.nearField, "'");
+    settings.cones.nearField = o.nearField == "on";
     settings.cones.narrowConesAfterFirstSample = parseSampleCones(o.sampleCones);
     settings.giResolution = parseGiResolution(o.giResolution);
     settings.giFilter = o.giFilter;

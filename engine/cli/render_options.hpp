@@ -24,6 +24,7 @@ struct RenderSettingsOptions {
     int voxelViewLevel = 0;
     bool noBricks = false;
     std::string gi = "on";
+    std::string nearField = "on";
     bool noPhotons = false;
     int bounces = 1;
     ConeSettings cones;

@@ -89,6 +89,8 @@
     X(TEXTURE_CARRIED_FROM, 11)      /* cone_upsample: IMAGE_CARRIED_FROM */                        \
     X(TEXTURE_TRACED_IRRADIANCE, 12) /* cone_upsample, indirect_filter: what the cones gathered */ \
     X(TEXTURE_TRACED_PIXEL, 13)      /* cone_upsample, indirect_filter: the pixel each block traced */ \
+    X(TEXTURE_NEAR_FIELD_DIRECT, 14) /* cone_trace, cone_upsample: near_field.glsl's direct light */ \
+    X(TEXTURE_NEAR_FIELD_EMISSIVE, 15) /* and emission */                                         \
     X(TEXTURE_VIEW_ALBEDO_BRICKS, 1) /* voxel_view: the albedo pool */                     \
     X(TEXTURE_LIGHT_POSITION, 0)     /* inject: the light-view map's photons */                   \
     X(TEXTURE_LIGHT_FLUX, 1)                                                                      \

@@ -147,7 +147,7 @@ std::uint64_t versionBesidesCamera(const FrameResources& f) {
 void traceCones(FrameResources& f, const FrameView& v) {
     if (!f.coneTrace) f.coneTrace = std::make_unique<ConeTrace>(f.settings.width, f.settings.height);
     f.coneTrace->render(*f.gbuffer, f.svo->octree(), *f.radiance, frameCones(f.settings), f.settings.giResolution,
-                        v.sample, f.settings.giFilter, v.transform, versionBesidesCamera(f));
+                        v.sample, f.settings.giFilter, v.transform, versionBesidesCamera(f), f.direct->radiance());
     f.coneStatisticsPending = true;
 }
 
@@ -250,8 +250,8 @@ const PassTable kFramePasses = {{
      }},
     {Pass::ConeTrace, "cone_trace", Stage::Camera,
      {I::ConeSettings, I::PixelCones, I::GiResolution, I::GiFilter},
-     {R::GBuffer, R::CellValues, R::CellRadiance, R::RadianceBricks, R::BouncedRadiance}, {R::IndirectIrradiance},
-     unlessConeTrace,
+     {R::GBuffer, R::DirectRadiance, R::CellValues, R::CellRadiance, R::RadianceBricks, R::BouncedRadiance},
+     {R::IndirectIrradiance}, unlessConeTrace,
      "cone_carry.comp, cone_trace.comp, cone_reuse.comp, indirect_filter.comp, cone_upsample.comp",
      traceCones},
     {Pass::VoxelView, "voxel_view", Stage::Camera,

@@ -188,12 +188,13 @@ ConeSettings voxelGatherCones(ConeSettings settings) {
     settings.narrowConesAfterFirstSample = ConeSettings{}.narrowConesAfterFirstSample;
     settings.reuseVoxels = ConeSettings{}.reuseVoxels;
     settings.carryVoxels = ConeSettings{}.carryVoxels;
+    settings.nearField = ConeSettings{}.nearField;  // a voxel's cones have no G-buffer to follow
     return settings;
 }
 
 void ConeTrace::render(const GBuffer& gbuffer, const Octree& octree, const RadianceVolume& radiance,
                        const ConeSettings& frame, GiResolution resolution, int sample, float filterVoxels,
-                       const ViewTransform& view, std::uint64_t sceneVersion) {
+                       const ViewTransform& view, std::uint64_t sceneVersion, GLuint directRadiance) {
     const SampleCones sampleCones = conesForSample(frame, sample);
     const ConeSettings& settings = sampleCones.cones;
     const int block = giBlockSize(resolution, width_, height_);
@@ -205,9 +206,16 @@ void ConeTrace::render(const GBuffer& gbuffer, const Octree& octree, const Radia
         tracedBlock_ = block;
     }
     const int lanes = coneLanes(settings);
-    if (!tracePrograms_[lanes].id())
-        tracePrograms_[lanes] =
-            gl::buildProgram({{GL_COMPUTE_SHADER, "cone_trace.comp"}}, {coneLanesDefine(lanes), "STORE_CONE_SAMPLES 1"});
+    // Only narrow cones follow their axes through the near field: the cone set's wide cones stay as they were tuned.
+    const int nearField = settings.nearField && settings.rays > 0 ? 1 : 0;
+    auto withNearField = [&](std::vector<std::string> defines) {
+        if (nearField) defines.push_back("SCREEN_NEAR_FIELD 1");
+        return defines;
+    };
+    gl::Program& traceProgram = tracePrograms_[nearField][lanes];
+    if (!traceProgram.id())
+        traceProgram = gl::buildProgram({{GL_COMPUTE_SHADER, "cone_trace.comp"}},
+                                        withNearField({coneLanesDefine(lanes), "STORE_CONE_SAMPLES 1"}));
     // With lanes each listed cell's lanes store their parts, which a second dispatch adds in the
     // cones' order: no shared memory and no barrier inside the trace.
     if (lanes > 1 && !sumLanesPrograms_[lanes].id())
@@ -218,8 +226,10 @@ void ConeTrace::render(const GBuffer& gbuffer, const Octree& octree, const Radia
         laneParts_ = gl::createBuffer(lanePartsBytes, nullptr, 0, "cone lanes' parts of the listed cells");
         lanePartsBytes_ = lanePartsBytes;
     }
-    if (inBlocks && !traceListedProgram_.id())
-        traceListedProgram_ = gl::buildProgram({{GL_COMPUTE_SHADER, "cone_upsample.comp"}}, {"TRACE_LISTED 1"});
+    gl::Program& traceListedProgram = traceListedPrograms_[nearField];
+    if (inBlocks && !traceListedProgram.id())
+        traceListedProgram =
+            gl::buildProgram({{GL_COMPUTE_SHADER, "cone_upsample.comp"}}, withNearField({"TRACE_LISTED 1"}));
     if (inBlocks && !upsampleProgram_.id()) {
         upsampleProgram_ = gl::buildProgram({{GL_COMPUTE_SHADER, "cone_upsample.comp"}});
         ownTracePixels_ = gl::createBuffer(GLsizeiptr(4) * width_ * height_, nullptr, 0, "pixels that trace their own cones");
@@ -237,7 +247,11 @@ void ConeTrace::render(const GBuffer& gbuffer, const Octree& octree, const Radia
             .texture(gl::TEXTURE_GBUFFER_POSITION, gbuffer.position())
             .storage(gl::SSBO_CONE_COUNTERS, counters_)
             .uniform("uDownscale", block)
-            .uniform("uRaySequence", sampleCones.raySequence);
+            .uniform("uRaySequence", sampleCones.raySequence)
+            .texture(gl::TEXTURE_NEAR_FIELD_DIRECT, directRadiance)
+            .texture(gl::TEXTURE_NEAR_FIELD_EMISSIVE, gbuffer.emissive())
+            .uniform("uViewProjection", view.viewProjection)
+            .uniform("uEye", view.eye);
         return call;
     };
     // Narrow cones go a few per dispatch (kNarrowConesPerDispatch), each dispatch adding to what
@@ -277,7 +291,7 @@ void ConeTrace::render(const GBuffer& gbuffer, const Octree& octree, const Radia
                                    GL_SHADER_STORAGE_BARRIER_BIT);
     };
     for (int batch = 0; batch < rayBatches; ++batch) {
-        gl::ComputeCall call = tracingCall(tracePrograms_[lanes]);
+        gl::ComputeCall call = tracingCall(traceProgram);
         call.uniform("uStoreConeSamples", reuse ? 1 : 0).uniform("uConeSampleRowLength", tracedWidth);
         if (reuse) call.storage(gl::SSBO_CONE_SAMPLES, reuse_->cones());
         dispatchOverListedCells(call, batch);
@@ -313,7 +327,7 @@ void ConeTrace::render(const GBuffer& gbuffer, const Octree& octree, const Radia
         upsample.dispatchImage(width_, height_,
                                GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
         for (int batch = 0; batch < rayBatches; ++batch) {
-            gl::ComputeCall call = upsampleCall(traceListedProgram_);
+            gl::ComputeCall call = upsampleCall(traceListedProgram);
             selectBatch(call, batch);
             listDispatch_.dispatch(call, counters_, gl::OWN_TRACE_COUNT_SLOT, dispatchArgs_, 0,
                                    GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);

@@ -94,6 +94,10 @@ struct ConeSettings {
     // (voxels, beyond a pixel's footprint) the point where a pixel's light was estimated may lie
     // from the point it serves now; 0: every frame traces anew.
     float carryVoxels = kDefaultConeCarryVoxels;
+    // The near field of the camera's narrow cones (`--near-field`, shaders/near_field.glsl): each
+    // cone's axis is first followed against the G-buffer up to where the cone starts, and a
+    // surface met there takes the cone's place; false: the cones alone.
+    bool nearField = true;
 
     bool operator==(const ConeSettings&) const = default;
 };
@@ -203,7 +207,7 @@ public:
     // the last frame's light (cone_carry.hpp).
     void render(const GBuffer& gbuffer, const Octree& octree, const RadianceVolume& radiance, const ConeSettings& frame,
                 GiResolution resolution, int sample, float filterVoxels, const ViewTransform& view,
-                std::uint64_t sceneVersion);
+                std::uint64_t sceneVersion, GLuint directRadiance);
     GLuint indirect() const { return result_; }  // RGBA32F: irradiance, visibility
     // Whether the last render took light from the frame before it (cone_carry.hpp).
     bool carried() const { return carry_ && carry_->carries(); }
@@ -215,12 +219,13 @@ private:
     gl::Texture indirect_;
     gl::Texture traced_, tracedPixel_;  // half or quarter resolution only, made on first use
     int tracedBlock_ = 0;               // the block size they were made for
-    // The tracing programs for each count of lanes (coneLanes), made on first use, and the pass
-    // that adds the lanes' parts of each listed cell; the upsampling, and the tracing of the
-    // pixels it lists (one lane: they are few, and their lanes' parts would need a buffer the
-    // size of the image).
-    std::array<gl::Program, kMaxConeLanes + 1> tracePrograms_, sumLanesPrograms_;
-    gl::Program traceListedProgram_;
+    // The tracing programs for each count of lanes (coneLanes), without and with the near field
+    // (ConeSettings::nearField), made on first use, and the pass that adds the lanes' parts of
+    // each listed cell; the upsampling, and the tracing of the pixels it lists (one lane: they
+    // are few, and their lanes' parts would need a buffer the size of the image).
+    std::array<std::array<gl::Program, kMaxConeLanes + 1>, 2> tracePrograms_;
+    std::array<gl::Program, kMaxConeLanes + 1> sumLanesPrograms_;
+    std::array<gl::Program, 2> traceListedPrograms_;
     gl::Buffer laneParts_;  // with lanes: each listed cell's lanes' parts, made on first use
     GLsizeiptr lanePartsBytes_ = 0;
     gl::Program upsampleProgram_;

@@ -213,6 +213,7 @@ void settingsSection(ViewerState& state, bool& changed) {
     changed |= ImGui::SliderInt("narrow cones per pixel (C; 0 = the cone set)", &s.cones.rays, 0, kMaxNarrowCones, "%d",
                                 ImGuiSliderFlags_AlwaysClamp);
     changed |= ImGui::Checkbox("narrow cones in later samples (at rest)", &s.cones.narrowConesAfterFirstSample);
+    changed |= ImGui::Checkbox("near field from the G-buffer", &s.cones.nearField);
     changed |= ImGui::SliderFloat("cones shared with neighbours (voxels, 0 = off)", &s.cones.reuseVoxels, 0.0f, 16.0f,
                                   "%.1f", ImGuiSliderFlags_AlwaysClamp);
     changed |= ImGui::SliderFloat("cones carried over camera moves (voxels, 0 = off)", &s.cones.carryVoxels, 0.0f, 4.0f,
