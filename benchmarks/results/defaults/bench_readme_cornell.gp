@@ -2,37 +2,37 @@
 set terminal pngcairo size 2100,700 enhanced font 'DejaVu Sans,10'
 set output "bench_readme_cornell.png"
 $engine << EOD
-50.3 0.0709748 0.06987 "GI off"
-1713 0.0167052 0.0115253 "cone_reuse=0"
-1730 0.0156022 0.00997492 "default"
+53.35 0.0709748 0.06987 "GI off"
+1965 0.0156022 0.00997492 "near_field=false"
+2019 0.0155911 0.00995865 "default"
 EOD
 $pathtracer << EOD
-10.1 0.152846 0.152266 "1"
-20.75 0.106638 0.105955 "2"
-45.07 0.0747809 0.0742655 "4"
-89.81 0.0533364 0.0529291 "8"
-178 0.0376246 0.0373476 "16"
-354.6 0.0264832 0.0262843 "32"
-723.9 0.0189356 0.0188115 "64"
-1437 0.0134033 0.0133121 "128"
-2909 0.0096764 0.00960391 "256"
+10.98 0.152846 0.152266 "1"
+21.94 0.106638 0.105955 "2"
+44.72 0.0747809 0.0742655 "4"
+89.59 0.0533364 0.0529291 "8"
+178.8 0.0376246 0.0373476 "16"
+363.7 0.0264832 0.0262843 "32"
+734.5 0.0189356 0.0188115 "64"
+1455 0.0134033 0.0133121 "128"
+3022 0.0096764 0.00960391 "256"
 EOD
 $pareto << EOD
-50.3 0.0709748 0.06987 "GI off"
-1713 0.0167052 0.0115253 "cone_reuse=0"
-1730 0.0156022 0.00997492 "default"
+53.35 0.0709748 0.06987 "GI off"
+1965 0.0156022 0.00997492 "near_field=false"
+2019 0.0155911 0.00995865 "default"
 EOD
 $paretoIndirect << EOD
-50.3 0.0709748 0.06987 "GI off"
-1713 0.0167052 0.0115253 "cone_reuse=0"
-1730 0.0156022 0.00997492 "default"
+53.35 0.0709748 0.06987 "GI off"
+1965 0.0156022 0.00997492 "near_field=false"
+2019 0.0155911 0.00995865 "default"
 EOD
 $default << EOD
-1730 0.0156022 0.00997492 "default"
+2019 0.0155911 0.00995865 "default"
 EOD
 set xtics ("1" 1, "2" 2, "5" 5, "10" 10, "20" 20, "50" 50, "100" 100, "200" 200, "500" 500, "1000" 1000, "2000" 2000, "5000" 5000, "10000" 10000, "20000" 20000, "50000" 50000, "100000" 100000, "200000" 200000, "500000" 500000)
 noise = 0.00233982
-set multiplot layout 1,3 title "cornell 320x240: error against time, vct settings and the path tracer (1 bounce, reference 4096 spp), llvmpipe (LLVM 15.0.6, 256 bits), 2026-11-27" font ',12'
+set multiplot layout 1,3 title "cornell 320x240: error against time, vct settings and the path tracer (1 bounce, reference 4096 spp), llvmpipe (LLVM 15.0.6, 256 bits), 2026-11-28" font ',12'
 set logscale xy
 set grid xtics ytics mxtics mytics lc rgb '#e0e0e0'
 set xlabel 'time (ms, log): vct full warm frame / path-tracer render, same CPU'
@@ -64,8 +64,8 @@ unset logscale y
 set ytics auto
 set format y '%g'
 set xtics ("1" 1, "2" 2, "5" 5, "10" 10, "20" 20, "50" 50, "100" 100, "200" 200, "500" 500, "1000" 1000, "2000" 2000, "5000" 5000, "10000" 10000, "20000" 20000, "50000" 50000, "100000" 100000, "200000" 200000, "500000" 500000)
-set xrange [38.6903:3113.67]
-set yrange [0.0111724:0.0754046]
+set xrange [41.0395:3634.4]
+set yrange [0.0111604:0.0754055]
 set key top left box opaque font ',9'
 set ylabel 'RMSE of the full image vs reference (linear)'
 set title 'vct points only (zoom; full image)'
