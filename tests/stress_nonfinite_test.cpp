@@ -175,6 +175,8 @@ TEST(StressNonFinite, LightAndCameraValuesOnTheCommandLineAreRefused) {
         {"--cone-lift nan", "--cone-lift"},          {"--cone-lift inf", "--cone-lift"},
         {"--cone-reuse nan", "--cone-reuse"},        {"--cone-reuse -1", "--cone-reuse"},
         {"--cone-carry nan", "--cone-carry"},        {"--cone-carry -1", "--cone-carry"},
+        {"--cone-max-distance nan", "--cone-max-distance"}, {"--cone-max-distance -1", "--cone-max-distance"},
+        {"--near-field yes", "--near-field"},
         {"--camera-step nan", "--camera-step"},      {"--camera-step 0", "--camera-step"},
     };
     for (const auto& [options, mentions] : cases) expectRefused(options, mentions, dir);

@@ -50,6 +50,11 @@ void addRenderSettingsOptions(CLI::App& command, RenderSettingsOptions& o) {
                        "narrow cones per side of each voxel that gathers a further bounce (--bounces), or 0: the "
                        "cone set (--cones), whose wide cones lose a third of each further bounce across a room")
         ->capture_default_str();
+    command.add_option("--cone-max-distance", o.cones.maxDistance,
+                       "diagnostic: cones stop this many voxels from where they start (0: through the whole volume); "
+                       "against vct reference --first-bounce-distance 0,D (D in world units) it says how far from a "
+                       "surface its light is right")
+        ->capture_default_str();
     command.add_option("--near-field", o.nearField,
                        "before each narrow cone of a pixel is traced, follow its axis against the G-buffer to where "
                        "the cone starts (1.5 voxels off the surface): a surface met there takes the cone's place, with "

@@ -114,7 +114,8 @@ void validateConeSettings(const ConeSettings& s) {
     if (!(s.carryVoxels >= 0.0f && s.carryVoxels <= 4.0f))
         fail("--cone-carry ", s.carryVoxels, " is out of range; use 0 (every frame traces anew) .. 4 voxels");
     if (!(s.maxDistance >= 0.0f) || !std::isfinite(s.maxDistance))
-        fail("cone maximum distance ", s.maxDistance, " must be a finite number ≥ 0 (0: the whole volume)");
+        fail("cone maximum distance (--cone-max-distance) ", s.maxDistance,
+             " must be a finite number of voxels ≥ 0 (0: the whole volume)");
 }
 
 void setConeMarchUniforms(gl::ComputeCall& call, const Octree& octree, const RadianceVolume& radiance,

@@ -2,36 +2,34 @@
 set terminal pngcairo size 2100,700 enhanced font 'DejaVu Sans,10'
 set output "bench_readme_sponza.png"
 $engine << EOD
-247.6 0.0439818 0.0316567 "GI off"
-1995 0.0325763 0.0111327 "cone_reuse=0"
-2018 0.032167 0.00992228 "default"
+258.2 0.0439818 0.0316567 "GI off"
+2145 0.03192 0.00920409 "default"
+2483 0.032167 0.00992228 "near_field=false"
 EOD
 $pathtracer << EOD
-49.47 0.100813 0.078527 "1"
-98.42 0.07398 0.0559022 "2"
-193.9 0.0538738 0.0398726 "4"
-388.4 0.0381414 0.0281776 "8"
-776.7 0.0270134 0.0199552 "16"
-1553 0.0192044 0.0143156 "32"
-3085 0.0138254 0.0102089 "64"
-6155 0.0101568 0.00748851 "128"
+51.98 0.100813 0.078527 "1"
+98.93 0.07398 0.0559022 "2"
+198.9 0.0538738 0.0398726 "4"
+389.3 0.0381414 0.0281776 "8"
+785.6 0.0270134 0.0199552 "16"
+1565 0.0192044 0.0143156 "32"
+3216 0.0138254 0.0102089 "64"
+6572 0.0101568 0.00748851 "128"
 EOD
 $pareto << EOD
-247.6 0.0439818 0.0316567 "GI off"
-1995 0.0325763 0.0111327 "cone_reuse=0"
-2018 0.032167 0.00992228 "default"
+258.2 0.0439818 0.0316567 "GI off"
+2145 0.03192 0.00920409 "default"
 EOD
 $paretoIndirect << EOD
-247.6 0.0439818 0.0316567 "GI off"
-1995 0.0325763 0.0111327 "cone_reuse=0"
-2018 0.032167 0.00992228 "default"
+258.2 0.0439818 0.0316567 "GI off"
+2145 0.03192 0.00920409 "default"
 EOD
 $default << EOD
-2018 0.032167 0.00992228 "default"
+2145 0.03192 0.00920409 "default"
 EOD
 set xtics ("1" 1, "2" 2, "5" 5, "10" 10, "20" 20, "50" 50, "100" 100, "200" 200, "500" 500, "1000" 1000, "2000" 2000, "5000" 5000, "10000" 10000, "20000" 20000, "50000" 50000, "100000" 100000, "200000" 200000, "500000" 500000)
 noise = 0.00337035
-set multiplot layout 1,3 title "sponza 320x180: error against time, vct settings and the path tracer (1 bounce, reference 1024 spp), llvmpipe (LLVM 15.0.6, 256 bits), 2026-11-27" font ',12'
+set multiplot layout 1,3 title "sponza 320x180: error against time, vct settings and the path tracer (1 bounce, reference 1024 spp), llvmpipe (LLVM 15.0.6, 256 bits), 2026-11-28" font ',12'
 set logscale xy
 set grid xtics ytics mxtics mytics lc rgb '#e0e0e0'
 set xlabel 'time (ms, log): vct full warm frame / path-tracer render, same CPU'
@@ -63,8 +61,8 @@ unset logscale y
 set ytics auto
 set format y '%g'
 set xtics ("10" 10, "20" 20, "50" 50, "100" 100, "200" 200, "500" 500, "1000" 1000, "2000" 2000, "5000" 5000, "10000" 10000, "20000" 20000, "50000" 50000, "100000" 100000, "200000" 200000, "500000" 500000)
-set xrange [190.425:3631.51]
-set yrange [0.0312219:0.044927]
+set xrange [198.634:4469.46]
+set yrange [0.030955:0.0449468]
 set key top left box opaque font ',9'
 set ylabel 'RMSE of the full image vs reference (linear)'
 set title 'vct points only (zoom; full image)'

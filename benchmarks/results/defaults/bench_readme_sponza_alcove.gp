@@ -2,35 +2,34 @@
 set terminal pngcairo size 2100,700 enhanced font 'DejaVu Sans,10'
 set output "bench_readme_sponza_alcove.png"
 $engine << EOD
-242.2 0.0149057 0.00718342 "GI off"
-1885 0.013608 0.00326258 "default"
-1952 0.0136879 0.00322534 "cone_reuse=0"
+420.2 0.0149057 0.00718342 "GI off"
+1884 0.013608 0.00326258 "near_field=false"
+3351 0.0136199 0.00342196 "default"
 EOD
 $pathtracer << EOD
-38.17 0.0304382 0.0246553 "1"
-73.25 0.0232197 0.0182311 "2"
-144.2 0.0161894 0.0125611 "4"
-282.2 0.0118156 0.0087004 "8"
-594 0.00837981 0.0063605 "16"
-1175 0.00565385 0.00448905 "32"
-2323 0.00419137 0.00318578 "64"
-4550 0.00309643 0.00232286 "128"
+43.37 0.0304382 0.0246553 "1"
+86.45 0.0232197 0.0182311 "2"
+173 0.0161894 0.0125611 "4"
+337.5 0.0118156 0.0087004 "8"
+695 0.00837981 0.0063605 "16"
+1380 0.00565385 0.00448905 "32"
+3467 0.00419137 0.00318578 "64"
+6140 0.00309643 0.00232286 "128"
 EOD
 $pareto << EOD
-242.2 0.0149057 0.00718342 "GI off"
-1885 0.013608 0.00326258 "default"
+420.2 0.0149057 0.00718342 "GI off"
+1884 0.013608 0.00326258 "near_field=false"
 EOD
 $paretoIndirect << EOD
-242.2 0.0149057 0.00718342 "GI off"
-1885 0.013608 0.00326258 "default"
-1952 0.0136879 0.00322534 "cone_reuse=0"
+420.2 0.0149057 0.00718342 "GI off"
+1884 0.013608 0.00326258 "near_field=false"
 EOD
 $default << EOD
-1885 0.013608 0.00326258 "default"
+3351 0.0136199 0.00342196 "default"
 EOD
 set xtics ("1" 1, "2" 2, "5" 5, "10" 10, "20" 20, "50" 50, "100" 100, "200" 200, "500" 500, "1000" 1000, "2000" 2000, "5000" 5000, "10000" 10000, "20000" 20000, "50000" 50000, "100000" 100000, "200000" 200000, "500000" 500000)
 noise = 0.0010487
-set multiplot layout 1,3 title "sponza 320x180: error against time, vct settings and the path tracer (1 bounce, reference 1024 spp), llvmpipe (LLVM 15.0.6, 256 bits), 2026-11-27" font ',12'
+set multiplot layout 1,3 title "sponza 320x180: error against time, vct settings and the path tracer (1 bounce, reference 1024 spp), llvmpipe (LLVM 15.0.6, 256 bits), 2026-11-28" font ',12'
 set logscale xy
 set grid xtics ytics mxtics mytics lc rgb '#e0e0e0'
 set xlabel 'time (ms, log): vct full warm frame / path-tracer render, same CPU'
@@ -62,7 +61,7 @@ unset logscale y
 set ytics auto
 set format y '%g'
 set xtics ("10" 10, "20" 20, "50" 50, "100" 100, "200" 200, "500" 500, "1000" 1000, "2000" 2000, "5000" 5000, "10000" 10000, "20000" 20000, "50000" 50000, "100000" 100000, "200000" 200000, "500000" 500000)
-set xrange [186.333:3512.95]
+set xrange [323.254:6031.07]
 set yrange [0.0135041:0.0150095]
 set key top left box opaque font ',9'
 set ylabel 'RMSE of the full image vs reference (linear)'

@@ -2,34 +2,36 @@
 set terminal pngcairo size 2100,700 enhanced font 'DejaVu Sans,10'
 set output "bench_readme_sponza_alternate.png"
 $engine << EOD
-220.5 0.0382067 0.0331504 "GI off"
-1934 0.0215993 0.0106498 "default"
-1937 0.0219233 0.0112356 "cone_reuse=0"
+480.7 0.0382067 0.0331504 "GI off"
+3793 0.0215993 0.0106498 "near_field=false"
+3887 0.0211385 0.00975785 "default"
 EOD
 $pathtracer << EOD
-55.33 0.10519 0.078003 "1"
-114 0.0759991 0.0551047 "2"
-223.6 0.0543785 0.0387149 "4"
-433.1 0.0391751 0.0275751 "8"
-869.2 0.0278626 0.0195666 "16"
-1610 0.0197724 0.0140758 "32"
-3013 0.0142997 0.0101254 "64"
-6015 0.0104086 0.00738225 "128"
+99.62 0.10519 0.078003 "1"
+167.7 0.0759991 0.0551047 "2"
+424.4 0.0543785 0.0387149 "4"
+973.6 0.0391751 0.0275751 "8"
+1849 0.0278626 0.0195666 "16"
+3048 0.0197724 0.0140758 "32"
+6715 0.0142997 0.0101254 "64"
+1.201e+04 0.0104086 0.00738225 "128"
 EOD
 $pareto << EOD
-220.5 0.0382067 0.0331504 "GI off"
-1934 0.0215993 0.0106498 "default"
+480.7 0.0382067 0.0331504 "GI off"
+3793 0.0215993 0.0106498 "near_field=false"
+3887 0.0211385 0.00975785 "default"
 EOD
 $paretoIndirect << EOD
-220.5 0.0382067 0.0331504 "GI off"
-1934 0.0215993 0.0106498 "default"
+480.7 0.0382067 0.0331504 "GI off"
+3793 0.0215993 0.0106498 "near_field=false"
+3887 0.0211385 0.00975785 "default"
 EOD
 $default << EOD
-1934 0.0215993 0.0106498 "default"
+3887 0.0211385 0.00975785 "default"
 EOD
-set xtics ("1" 1, "2" 2, "5" 5, "10" 10, "20" 20, "50" 50, "100" 100, "200" 200, "500" 500, "1000" 1000, "2000" 2000, "5000" 5000, "10000" 10000, "20000" 20000, "50000" 50000, "100000" 100000, "200000" 200000, "500000" 500000)
+set xtics ("1" 1, "2" 2, "5" 5, "10" 10, "20" 20, "50" 50, "100" 100, "200" 200, "500" 500, "1000" 1000, "2000" 2000, "5000" 5000, "10000" 10000, "20000" 20000, "50000" 50000, "100000" 100000, "200000" 200000, "500000" 500000, "1e+06" 1e+06, "2e+06" 2e+06, "5e+06" 5e+06)
 noise = 0.00347134
-set multiplot layout 1,3 title "sponza 320x180: error against time, vct settings and the path tracer (1 bounce, reference 1024 spp), llvmpipe (LLVM 15.0.6, 256 bits), 2026-11-27" font ',12'
+set multiplot layout 1,3 title "sponza 320x180: error against time, vct settings and the path tracer (1 bounce, reference 1024 spp), llvmpipe (LLVM 15.0.6, 256 bits), 2026-11-28" font ',12'
 set logscale xy
 set grid xtics ytics mxtics mytics lc rgb '#e0e0e0'
 set xlabel 'time (ms, log): vct full warm frame / path-tracer render, same CPU'
@@ -61,8 +63,8 @@ unset logscale y
 set ytics auto
 set format y '%g'
 set xtics ("10" 10, "20" 20, "50" 50, "100" 100, "200" 200, "500" 500, "1000" 1000, "2000" 2000, "5000" 5000, "10000" 10000, "20000" 20000, "50000" 50000, "100000" 100000, "200000" 200000, "500000" 500000)
-set xrange [169.584:3485.93]
-set yrange [0.0202707:0.0395353]
+set xrange [369.739:6997.21]
+set yrange [0.019773:0.0395721]
 set key top left box opaque font ',9'
 set ylabel 'RMSE of the full image vs reference (linear)'
 set title 'vct points only (zoom; full image)'

@@ -2,36 +2,36 @@
 set terminal pngcairo size 2100,700 enhanced font 'DejaVu Sans,10'
 set output "bench_readme_sponza_balcony.png"
 $engine << EOD
-205.5 0.00273708 0.00273708 "GI off"
-1857 0.00145161 0.00145161 "cone_reuse=0"
-1897 0.00128793 0.00128793 "default"
+281.1 0.00273708 0.00273708 "GI off"
+2236 0.00131042 0.00131042 "default"
+2575 0.00128793 0.00128793 "near_field=false"
 EOD
 $pathtracer << EOD
-36.98 0.0177069 0.0177069 "1"
-72.93 0.0133459 0.0133459 "2"
-146.1 0.00957402 0.00957402 "4"
-286.9 0.00682156 0.00682156 "8"
-588.3 0.00490017 0.00490017 "16"
-1154 0.00348164 0.00348164 "32"
-2318 0.00249175 0.00249175 "64"
-4729 0.00183139 0.00183139 "128"
+53.46 0.0177069 0.0177069 "1"
+100.2 0.0133459 0.0133459 "2"
+230.6 0.00957402 0.00957402 "4"
+519.1 0.00682156 0.00682156 "8"
+1167 0.00490017 0.00490017 "16"
+2109 0.00348164 0.00348164 "32"
+4407 0.00249175 0.00249175 "64"
+5163 0.00183139 0.00183139 "128"
 EOD
 $pareto << EOD
-205.5 0.00273708 0.00273708 "GI off"
-1857 0.00145161 0.00145161 "cone_reuse=0"
-1897 0.00128793 0.00128793 "default"
+281.1 0.00273708 0.00273708 "GI off"
+2236 0.00131042 0.00131042 "default"
+2575 0.00128793 0.00128793 "near_field=false"
 EOD
 $paretoIndirect << EOD
-205.5 0.00273708 0.00273708 "GI off"
-1857 0.00145161 0.00145161 "cone_reuse=0"
-1897 0.00128793 0.00128793 "default"
+281.1 0.00273708 0.00273708 "GI off"
+2236 0.00131042 0.00131042 "default"
+2575 0.00128793 0.00128793 "near_field=false"
 EOD
 $default << EOD
-1897 0.00128793 0.00128793 "default"
+2236 0.00131042 0.00131042 "default"
 EOD
 set xtics ("1" 1, "2" 2, "5" 5, "10" 10, "20" 20, "50" 50, "100" 100, "200" 200, "500" 500, "1000" 1000, "2000" 2000, "5000" 5000, "10000" 10000, "20000" 20000, "50000" 50000, "100000" 100000, "200000" 200000, "500000" 500000)
 noise = 0.000609846
-set multiplot layout 1,3 title "sponza 320x180: error against time, vct settings and the path tracer (1 bounce, reference 1024 spp), llvmpipe (LLVM 15.0.6, 256 bits), 2026-11-27" font ',12'
+set multiplot layout 1,3 title "sponza 320x180: error against time, vct settings and the path tracer (1 bounce, reference 1024 spp), llvmpipe (LLVM 15.0.6, 256 bits), 2026-11-28" font ',12'
 set logscale xy
 set grid xtics ytics mxtics mytics lc rgb '#e0e0e0'
 set xlabel 'time (ms, log): vct full warm frame / path-tracer render, same CPU'
@@ -63,7 +63,7 @@ unset logscale y
 set ytics auto
 set format y '%g'
 set xtics ("10" 10, "20" 20, "50" 50, "100" 100, "200" 200, "500" 500, "1000" 1000, "2000" 2000, "5000" 5000, "10000" 10000, "20000" 20000, "50000" 50000, "100000" 100000, "200000" 200000, "500000" 500000)
-set xrange [158.099:3415.1]
+set xrange [216.22:4634.91]
 set yrange [0.001172:0.00285301]
 set key top left box opaque font ',9'
 set ylabel 'RMSE of the full image vs reference (linear)'
