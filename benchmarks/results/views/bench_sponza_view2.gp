@@ -2,26 +2,26 @@
 set terminal pngcairo size 2100,700 enhanced font 'DejaVu Sans,10'
 set output "bench_sponza_view2.png"
 $engine << EOD
-2126 0.0183463 0.0080922 "default"
+3769 0.0151266 0.00488792 "default"
 EOD
 $pathtracer << EOD
-42.04 0.0720015 0.0513106 "1"
-155.9 0.0381396 0.0261231 "4"
-625.1 0.0192438 0.0129216 "16"
-2506 0.0102165 0.00683016 "64"
+50.69 0.0720015 0.0513106 "1"
+200.6 0.0381396 0.0261231 "4"
+819.5 0.0192438 0.0129216 "16"
+3264 0.0102165 0.00683016 "64"
 EOD
 $pareto << EOD
-2126 0.0183463 0.0080922 "default"
+3769 0.0151266 0.00488792 "default"
 EOD
 $paretoIndirect << EOD
-2126 0.0183463 0.0080922 "default"
+3769 0.0151266 0.00488792 "default"
 EOD
 $default << EOD
-2126 0.0183463 0.0080922 "default"
+3769 0.0151266 0.00488792 "default"
 EOD
 set xtics ("1" 1, "2" 2, "5" 5, "10" 10, "20" 20, "50" 50, "100" 100, "200" 200, "500" 500, "1000" 1000, "2000" 2000, "5000" 5000, "10000" 10000, "20000" 20000, "50000" 50000, "100000" 100000, "200000" 200000, "500000" 500000)
 noise = 0.00340675
-set multiplot layout 1,3 title "sponza 320x180: error against time, vct settings and the path tracer (1 bounce, reference 512 spp), llvmpipe (LLVM 15.0.6, 256 bits), 2026-11-25" font ',12'
+set multiplot layout 1,3 title "sponza 320x180: error against time, vct settings and the path tracer (1 bounce, reference 512 spp), llvmpipe (LLVM 15.0.6, 256 bits), 2026-11-28" font ',12'
 set logscale xy
 set grid xtics ytics mxtics mytics lc rgb '#e0e0e0'
 set xlabel 'time (ms, log): vct full warm frame / path-tracer render, same CPU'
@@ -53,8 +53,8 @@ unset logscale y
 set ytics auto
 set format y '%g'
 set xtics ("100" 100, "200" 200, "500" 500, "1000" 1000, "2000" 2000, "5000" 5000, "10000" 10000, "20000" 20000, "50000" 50000, "100000" 100000, "200000" 200000, "500000" 500000)
-set xrange [1635.07:3826.06]
-set yrange [0.0182729:0.0184197]
+set xrange [2899.37:6784.53]
+set yrange [0.0150661:0.0151871]
 set key top left box opaque font ',9'
 set ylabel 'RMSE of the full image vs reference (linear)'
 set title 'vct points only (zoom; full image)'

@@ -2,26 +2,26 @@
 set terminal pngcairo size 2100,700 enhanced font 'DejaVu Sans,10'
 set output "bench_sponza_view3.png"
 $engine << EOD
-2115 0.0139157 0.00676025 "default"
+2036 0.012147 0.00395412 "default"
 EOD
 $pathtracer << EOD
-35.97 0.0384091 0.0356798 "1"
-137 0.0199135 0.0179634 "4"
-544.7 0.0103993 0.00923586 "16"
-2282 0.00550717 0.0048883 "64"
+38.01 0.0384091 0.0356798 "1"
+148.1 0.0199135 0.0179634 "4"
+608.9 0.0103993 0.00923586 "16"
+2329 0.00550717 0.0048883 "64"
 EOD
 $pareto << EOD
-2115 0.0139157 0.00676025 "default"
+2036 0.012147 0.00395412 "default"
 EOD
 $paretoIndirect << EOD
-2115 0.0139157 0.00676025 "default"
+2036 0.012147 0.00395412 "default"
 EOD
 $default << EOD
-2115 0.0139157 0.00676025 "default"
+2036 0.012147 0.00395412 "default"
 EOD
 set xtics ("1" 1, "2" 2, "5" 5, "10" 10, "20" 20, "50" 50, "100" 100, "200" 200, "500" 500, "1000" 1000, "2000" 2000, "5000" 5000, "10000" 10000, "20000" 20000, "50000" 50000, "100000" 100000, "200000" 200000, "500000" 500000)
 noise = 0.00180502
-set multiplot layout 1,3 title "sponza 320x180: error against time, vct settings and the path tracer (1 bounce, reference 512 spp), llvmpipe (LLVM 15.0.6, 256 bits), 2026-11-25" font ',12'
+set multiplot layout 1,3 title "sponza 320x180: error against time, vct settings and the path tracer (1 bounce, reference 512 spp), llvmpipe (LLVM 15.0.6, 256 bits), 2026-11-28" font ',12'
 set logscale xy
 set grid xtics ytics mxtics mytics lc rgb '#e0e0e0'
 set xlabel 'time (ms, log): vct full warm frame / path-tracer render, same CPU'
@@ -53,8 +53,8 @@ unset logscale y
 set ytics auto
 set format y '%g'
 set xtics ("100" 100, "200" 200, "500" 500, "1000" 1000, "2000" 2000, "5000" 5000, "10000" 10000, "20000" 20000, "50000" 50000, "100000" 100000, "200000" 200000, "500000" 500000)
-set xrange [1626.9:3806.95]
-set yrange [0.01386:0.0139713]
+set xrange [1566.39:3665.36]
+set yrange [0.0120984:0.0121956]
 set key top left box opaque font ',9'
 set ylabel 'RMSE of the full image vs reference (linear)'
 set title 'vct points only (zoom; full image)'

@@ -2,26 +2,26 @@
 set terminal pngcairo size 2100,700 enhanced font 'DejaVu Sans,10'
 set output "bench_sponza_view4.png"
 $engine << EOD
-2030 0.00987408 0.00446328 "default"
+2073 0.00970179 0.00440555 "default"
 EOD
 $pathtracer << EOD
-34.91 0.018162 0.0140735 "1"
-129.7 0.0109082 0.00751945 "4"
-484.9 0.00581826 0.00397066 "16"
-1950 0.00293742 0.00213764 "64"
+38.19 0.018162 0.0140735 "1"
+151.5 0.0109082 0.00751945 "4"
+617 0.00581826 0.00397066 "16"
+2610 0.00293742 0.00213764 "64"
 EOD
 $pareto << EOD
-2030 0.00987408 0.00446328 "default"
+2073 0.00970179 0.00440555 "default"
 EOD
 $paretoIndirect << EOD
-2030 0.00987408 0.00446328 "default"
+2073 0.00970179 0.00440555 "default"
 EOD
 $default << EOD
-2030 0.00987408 0.00446328 "default"
+2073 0.00970179 0.00440555 "default"
 EOD
 set xtics ("1" 1, "2" 2, "5" 5, "10" 10, "20" 20, "50" 50, "100" 100, "200" 200, "500" 500, "1000" 1000, "2000" 2000, "5000" 5000, "10000" 10000, "20000" 20000, "50000" 50000, "100000" 100000, "200000" 200000, "500000" 500000)
 noise = 0.00101506
-set multiplot layout 1,3 title "sponza 320x180: error against time, vct settings and the path tracer (1 bounce, reference 512 spp), llvmpipe (LLVM 15.0.6, 256 bits), 2026-11-25" font ',12'
+set multiplot layout 1,3 title "sponza 320x180: error against time, vct settings and the path tracer (1 bounce, reference 512 spp), llvmpipe (LLVM 15.0.6, 256 bits), 2026-11-28" font ',12'
 set logscale xy
 set grid xtics ytics mxtics mytics lc rgb '#e0e0e0'
 set xlabel 'time (ms, log): vct full warm frame / path-tracer render, same CPU'
@@ -53,8 +53,8 @@ unset logscale y
 set ytics auto
 set format y '%g'
 set xtics ("100" 100, "200" 200, "500" 500, "1000" 1000, "2000" 2000, "5000" 5000, "10000" 10000, "20000" 20000, "50000" 50000, "100000" 100000, "200000" 200000, "500000" 500000)
-set xrange [1561.2:3653.2]
-set yrange [0.00983458:0.00991358]
+set xrange [1594.36:3730.79]
+set yrange [0.00966299:0.0097406]
 set key top left box opaque font ',9'
 set ylabel 'RMSE of the full image vs reference (linear)'
 set title 'vct points only (zoom; full image)'
