@@ -204,7 +204,8 @@ public:
     // (conesForSample). `filterVoxels`: the width of the edge-aware filter of what the cones traced
     // (indirect_filter.hpp), 0: none. `view`: the camera's; `sceneVersion` changes whenever anything
     // but the camera does (geometry, lights, settings): a frame of another version never takes
-    // the last frame's light (cone_carry.hpp).
+    // the last frame's light (cone_carry.hpp). `directRadiance`: the direct light shaded on this
+    // G-buffer (DirectLighting), what a surface in the narrow cones' near field sends back.
     void render(const GBuffer& gbuffer, const Octree& octree, const RadianceVolume& radiance, const ConeSettings& frame,
                 GiResolution resolution, int sample, float filterVoxels, const ViewTransform& view,
                 std::uint64_t sceneVersion, GLuint directRadiance);
