@@ -2,43 +2,49 @@
 set terminal pngcairo size 2100,700 enhanced font 'DejaVu Sans,10'
 set output "bench_sponza_alternate.png"
 $engine << EOD
-3949 0.035301 0.0181193 "step 0.75"
-4012 0.0368192 0.0195 "offset 2.5"
-4040 0.0363432 0.0191841 "offset 1"
-4076 0.0364575 0.019122 "step 0.35"
-4082 0.0358381 0.0182614 "aperture 0.85"
-4108 0.0369357 0.0195485 "aperture 1.25"
-4125 0.0350199 0.0208033 "lift 0.5"
-4127 0.0361359 0.0189119 "default"
-4137 0.0374705 0.0260857 "lift 1"
-4423 0.0358393 0.0179367 "cones 9"
-4899 0.0351497 0.0165873 "cones 16"
+1849 0.0242934 0.0152029 "cone_rays=0"
+1913 0.0211554 0.00980545 "aperture 1.25"
+1937 0.0210641 0.00960539 "aperture 0.85"
+1948 0.0211532 0.00979669 "lift 0.5"
+1961 0.0211528 0.00980196 "lift 1"
+2005 0.0211525 0.00977838 "step 0.75"
+2017 0.0213566 0.0102012 "offset 2.5"
+2023 0.0211325 0.00974788 "step 1.5"
+2026 0.0211174 0.00967068 "offset 1"
+2170 0.0211385 0.00975785 "default"
+2362 0.020847 0.00905251 "cone_rays=8"
+2951 0.0206618 0.00857037 "cone_rays=16"
 EOD
 $pathtracer << EOD
-91.51 0.105181 0.0779611 "1"
-144.7 0.0759862 0.055088 "2"
-237.1 0.0543185 0.0386856 "4"
-487.8 0.0391672 0.0275592 "8"
-1015 0.0278523 0.0195532 "16"
-1856 0.0197627 0.0140643 "32"
-3645 0.0142802 0.0101104 "64"
-7286 0.0104036 0.00737476 "128"
+50.52 0.10519 0.078003 "1"
+99.5 0.0759991 0.0551047 "2"
+196.4 0.0543785 0.0387149 "4"
+430.8 0.0391751 0.0275751 "8"
+797.2 0.0278626 0.0195666 "16"
+1550 0.0197724 0.0140758 "32"
+3344 0.0142997 0.0101254 "64"
+8061 0.0104086 0.00738225 "128"
 EOD
 $pareto << EOD
-3949 0.035301 0.0181193 "step 0.75"
-4125 0.0350199 0.0208033 "lift 0.5"
+1849 0.0242934 0.0152029 "cone_rays=0"
+1913 0.0211554 0.00980545 "aperture 1.25"
+1937 0.0210641 0.00960539 "aperture 0.85"
+2362 0.020847 0.00905251 "cone_rays=8"
+2951 0.0206618 0.00857037 "cone_rays=16"
 EOD
 $paretoIndirect << EOD
-3949 0.035301 0.0181193 "step 0.75"
-4423 0.0358393 0.0179367 "cones 9"
-4899 0.0351497 0.0165873 "cones 16"
+1849 0.0242934 0.0152029 "cone_rays=0"
+1913 0.0211554 0.00980545 "aperture 1.25"
+1937 0.0210641 0.00960539 "aperture 0.85"
+2362 0.020847 0.00905251 "cone_rays=8"
+2951 0.0206618 0.00857037 "cone_rays=16"
 EOD
 $default << EOD
-4127 0.0361359 0.0189119 "default"
+2170 0.0211385 0.00975785 "default"
 EOD
 set xtics ("1" 1, "2" 2, "5" 5, "10" 10, "20" 20, "50" 50, "100" 100, "200" 200, "500" 500, "1000" 1000, "2000" 2000, "5000" 5000, "10000" 10000, "20000" 20000, "50000" 50000, "100000" 100000, "200000" 200000, "500000" 500000)
-noise = 0.00346966
-set multiplot layout 1,3 title "sponza 320x180: error against time, vct settings and the path tracer (1 bounce, reference 1024 spp), llvmpipe (LLVM 15.0.6, 256 bits), 2026-11-24" font ',12'
+noise = 0.00347134
+set multiplot layout 1,3 title "sponza 320x180: error against time, vct settings and the path tracer (1 bounce, reference 1024 spp), llvmpipe (LLVM 15.0.6, 256 bits), 2026-11-28" font ',12'
 set logscale xy
 set grid xtics ytics mxtics mytics lc rgb '#e0e0e0'
 set xlabel 'time (ms, log): vct full warm frame / path-tracer render, same CPU'
@@ -70,8 +76,8 @@ unset logscale y
 set ytics auto
 set format y '%g'
 set xtics ("100" 100, "200" 200, "500" 500, "1000" 1000, "2000" 2000, "5000" 5000, "10000" 10000, "20000" 20000, "50000" 50000, "100000" 100000, "200000" 200000, "500000" 500000)
-set xrange [3037.33:8817.73]
-set yrange [0.0348238:0.0376666]
+set xrange [1422.07:5310.91]
+set yrange [0.0203713:0.0245839]
 set key top left box opaque font ',9'
 set ylabel 'RMSE of the full image vs reference (linear)'
 set title 'vct points only (zoom; full image)'
