@@ -2,29 +2,29 @@
 set terminal pngcairo size 2100,700 enhanced font 'DejaVu Sans,10'
 set output "bench_cornell_bounces.png"
 $engine << EOD
-1604 0.0156022 0.00997492 "default"
-3746 0.0169159 0.011042 "bounces=2"
-8007 0.0179291 0.0123645 "bounces=4"
+1894 0.0155911 0.00995865 "default"
+3824 0.016856 0.0109959 "bounces=2"
+8129 0.0178358 0.0122842 "bounces=4"
 EOD
 $pathtracer << EOD
-10.43 0.152846 0.152266 "1"
-42.16 0.0747809 0.0742655 "4"
-169.1 0.0376246 0.0373476 "16"
-681 0.0189356 0.0188115 "64"
-2743 0.0096764 0.00960391 "256"
+12.65 0.152846 0.152266 "1"
+47.22 0.0747809 0.0742655 "4"
+190.1 0.0376246 0.0373476 "16"
+760.5 0.0189356 0.0188115 "64"
+3035 0.0096764 0.00960391 "256"
 EOD
 $pareto << EOD
-1604 0.0156022 0.00997492 "default"
+1894 0.0155911 0.00995865 "default"
 EOD
 $paretoIndirect << EOD
-1604 0.0156022 0.00997492 "default"
+1894 0.0155911 0.00995865 "default"
 EOD
 $default << EOD
-1604 0.0156022 0.00997492 "default"
+1894 0.0155911 0.00995865 "default"
 EOD
 set xtics ("1" 1, "2" 2, "5" 5, "10" 10, "20" 20, "50" 50, "100" 100, "200" 200, "500" 500, "1000" 1000, "2000" 2000, "5000" 5000, "10000" 10000, "20000" 20000, "50000" 50000, "100000" 100000, "200000" 200000, "500000" 500000)
 noise = 0.00233982
-set multiplot layout 1,3 title "cornell 320x240: error against time, vct settings and the path tracer (1 bounce, reference 4096 spp), llvmpipe (LLVM 15.0.6, 256 bits), 2026-11-27" font ',12'
+set multiplot layout 1,3 title "cornell 320x240: error against time, vct settings and the path tracer (1 bounce, reference 4096 spp), llvmpipe (LLVM 15.0.6, 256 bits), 2026-11-28" font ',12'
 set logscale xy
 set grid xtics ytics mxtics mytics lc rgb '#e0e0e0'
 set xlabel 'time (ms, log): vct full warm frame / path-tracer render, same CPU'
@@ -56,8 +56,8 @@ unset logscale y
 set ytics auto
 set format y '%g'
 set xtics ("100" 100, "200" 200, "500" 500, "1000" 1000, "2000" 2000, "5000" 5000, "10000" 10000, "20000" 20000, "50000" 50000, "100000" 100000, "200000" 200000, "500000" 500000)
-set xrange [1233.6:14412.3]
-set yrange [0.0154161:0.0181153]
+set xrange [1456.76:14631.3]
+set yrange [0.0154115:0.0180154]
 set key top left box opaque font ',9'
 set ylabel 'RMSE of the full image vs reference (linear)'
 set title 'vct points only (zoom; full image)'

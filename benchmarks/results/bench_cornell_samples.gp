@@ -2,34 +2,33 @@
 set terminal pngcairo size 2100,700 enhanced font 'DejaVu Sans,10'
 set output "bench_cornell_samples.png"
 $engine << EOD
-1672 0.0246817 0.0214807 "samples=1"
-2043 0.0222354 0.0207362 "samples=4"
-3573 0.0105554 0.0101959 "default"
-7565 0.012501 0.0122128 "sample_cones=frame"
+1700 0.0155911 0.00995865 "samples=1"
+2069 0.015044 0.0127209 "samples=4"
+3588 0.00757583 0.00702959 "default"
+8222 0.00942157 0.00900764 "sample_cones=frame"
 EOD
 $pathtracer << EOD
-10.51 0.152846 0.152266 "1"
-41.6 0.0747809 0.0742655 "4"
-168.3 0.0376246 0.0373476 "16"
-712.7 0.0189356 0.0188115 "64"
-2919 0.0096764 0.00960391 "256"
+11.67 0.152846 0.152266 "1"
+46.73 0.0747809 0.0742655 "4"
+186.3 0.0376246 0.0373476 "16"
+753.3 0.0189356 0.0188115 "64"
+2967 0.0096764 0.00960391 "256"
 EOD
 $pareto << EOD
-1672 0.0246817 0.0214807 "samples=1"
-2043 0.0222354 0.0207362 "samples=4"
-3573 0.0105554 0.0101959 "default"
+1700 0.0155911 0.00995865 "samples=1"
+2069 0.015044 0.0127209 "samples=4"
+3588 0.00757583 0.00702959 "default"
 EOD
 $paretoIndirect << EOD
-1672 0.0246817 0.0214807 "samples=1"
-2043 0.0222354 0.0207362 "samples=4"
-3573 0.0105554 0.0101959 "default"
+1700 0.0155911 0.00995865 "samples=1"
+3588 0.00757583 0.00702959 "default"
 EOD
 $default << EOD
-3573 0.0105554 0.0101959 "default"
+3588 0.00757583 0.00702959 "default"
 EOD
 set xtics ("1" 1, "2" 2, "5" 5, "10" 10, "20" 20, "50" 50, "100" 100, "200" 200, "500" 500, "1000" 1000, "2000" 2000, "5000" 5000, "10000" 10000, "20000" 20000, "50000" 50000, "100000" 100000, "200000" 200000, "500000" 500000)
 noise = 0.00233982
-set multiplot layout 1,3 title "cornell 320x240: error against time, vct settings and the path tracer (1 bounce, reference 4096 spp), llvmpipe (LLVM 15.0.6, 256 bits), 2026-11-27" font ',12'
+set multiplot layout 1,3 title "cornell 320x240: error against time, vct settings and the path tracer (1 bounce, reference 4096 spp), llvmpipe (LLVM 15.0.6, 256 bits), 2026-11-28" font ',12'
 set logscale xy
 set grid xtics ytics mxtics mytics lc rgb '#e0e0e0'
 set xlabel 'time (ms, log): vct full warm frame / path-tracer render, same CPU'
@@ -61,8 +60,8 @@ unset logscale y
 set ytics auto
 set format y '%g'
 set xtics ("100" 100, "200" 200, "500" 500, "1000" 1000, "2000" 2000, "5000" 5000, "10000" 10000, "20000" 20000, "50000" 50000, "100000" 100000, "200000" 200000, "500000" 500000)
-set xrange [1285.8:13617.8]
-set yrange [0.00942534:0.0258118]
+set xrange [1307.56:14799.3]
+set yrange [0.0069346:0.0162323]
 set key top left box opaque font ',9'
 set ylabel 'RMSE of the full image vs reference (linear)'
 set title 'vct points only (zoom; full image)'

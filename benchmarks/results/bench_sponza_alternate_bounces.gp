@@ -2,27 +2,27 @@
 set terminal pngcairo size 2100,700 enhanced font 'DejaVu Sans,10'
 set output "bench_sponza_alternate_bounces.png"
 $engine << EOD
-1952 0.0218617 0.0109486 "default"
-8413 0.0222457 0.011496 "bounces=4"
+2008 0.021401 0.0100743 "default"
+8834 0.0217216 0.0105228 "bounces=4"
 EOD
 $pathtracer << EOD
-49.74 0.105219 0.0780602 "1"
-196.4 0.0544929 0.0388028 "4"
-792.3 0.0280296 0.0197261 "16"
-3300 0.0147533 0.0104631 "64"
+55.44 0.105219 0.0780602 "1"
+210.9 0.0544929 0.0388028 "4"
+846.6 0.0280296 0.0197261 "16"
+3311 0.0147533 0.0104631 "64"
 EOD
 $pareto << EOD
-1952 0.0218617 0.0109486 "default"
+2008 0.021401 0.0100743 "default"
 EOD
 $paretoIndirect << EOD
-1952 0.0218617 0.0109486 "default"
+2008 0.021401 0.0100743 "default"
 EOD
 $default << EOD
-1952 0.0218617 0.0109486 "default"
+2008 0.021401 0.0100743 "default"
 EOD
 set xtics ("1" 1, "2" 2, "5" 5, "10" 10, "20" 20, "50" 50, "100" 100, "200" 200, "500" 500, "1000" 1000, "2000" 2000, "5000" 5000, "10000" 10000, "20000" 20000, "50000" 50000, "100000" 100000, "200000" 200000, "500000" 500000)
 noise = 0.00490899
-set multiplot layout 1,3 title "sponza 320x180: error against time, vct settings and the path tracer (1 bounce, reference 512 spp), llvmpipe (LLVM 15.0.6, 256 bits), 2026-11-27" font ',12'
+set multiplot layout 1,3 title "sponza 320x180: error against time, vct settings and the path tracer (1 bounce, reference 512 spp), llvmpipe (LLVM 15.0.6, 256 bits), 2026-11-28" font ',12'
 set logscale xy
 set grid xtics ytics mxtics mytics lc rgb '#e0e0e0'
 set xlabel 'time (ms, log): vct full warm frame / path-tracer render, same CPU'
@@ -54,8 +54,8 @@ unset logscale y
 set ytics auto
 set format y '%g'
 set xtics ("100" 100, "200" 200, "500" 500, "1000" 1000, "2000" 2000, "5000" 5000, "10000" 10000, "20000" 20000, "50000" 50000, "100000" 100000, "200000" 200000, "500000" 500000)
-set xrange [1501.27:15144.1]
-set yrange [0.0217727:0.0223347]
+set xrange [1544.78:15900.7]
+set yrange [0.0213142:0.0218084]
 set key top left box opaque font ',9'
 set ylabel 'RMSE of the full image vs reference (linear)'
 set title 'vct points only (zoom; full image)'

@@ -2,27 +2,27 @@
 set terminal pngcairo size 2100,700 enhanced font 'DejaVu Sans,10'
 set output "bench_sponza_balcony_bounces.png"
 $engine << EOD
-2048 0.0014078 0.0014078 "default"
-8645 0.00182265 0.00182265 "bounces=4"
+1945 0.00142405 0.00142405 "default"
+8545 0.00186226 0.00186226 "bounces=4"
 EOD
 $pathtracer << EOD
-38.49 0.0177136 0.0177136 "1"
+37.92 0.0177136 0.0177136 "1"
 146.8 0.00959273 0.00959273 "4"
-572.7 0.00491866 0.00491866 "16"
-2288 0.00255908 0.00255908 "64"
+594.8 0.00491866 0.00491866 "16"
+2376 0.00255908 0.00255908 "64"
 EOD
 $pareto << EOD
-2048 0.0014078 0.0014078 "default"
+1945 0.00142405 0.00142405 "default"
 EOD
 $paretoIndirect << EOD
-2048 0.0014078 0.0014078 "default"
+1945 0.00142405 0.00142405 "default"
 EOD
 $default << EOD
-2048 0.0014078 0.0014078 "default"
+1945 0.00142405 0.00142405 "default"
 EOD
 set xtics ("1" 1, "2" 2, "5" 5, "10" 10, "20" 20, "50" 50, "100" 100, "200" 200, "500" 500, "1000" 1000, "2000" 2000, "5000" 5000, "10000" 10000, "20000" 20000, "50000" 50000, "100000" 100000, "200000" 200000, "500000" 500000)
 noise = 0.000861221
-set multiplot layout 1,3 title "sponza 320x180: error against time, vct settings and the path tracer (1 bounce, reference 512 spp), llvmpipe (LLVM 15.0.6, 256 bits), 2026-11-27" font ',12'
+set multiplot layout 1,3 title "sponza 320x180: error against time, vct settings and the path tracer (1 bounce, reference 512 spp), llvmpipe (LLVM 15.0.6, 256 bits), 2026-11-28" font ',12'
 set logscale xy
 set grid xtics ytics mxtics mytics lc rgb '#e0e0e0'
 set xlabel 'time (ms, log): vct full warm frame / path-tracer render, same CPU'
@@ -54,8 +54,8 @@ unset logscale y
 set ytics auto
 set format y '%g'
 set xtics ("100" 100, "200" 200, "500" 500, "1000" 1000, "2000" 2000, "5000" 5000, "10000" 10000, "20000" 20000, "50000" 50000, "100000" 100000, "200000" 200000, "500000" 500000)
-set xrange [1575.69:15561.7]
-set yrange [0.00137461:0.00185584]
+set xrange [1496.45:15380.1]
+set yrange [0.00138899:0.00189731]
 set key top left box opaque font ',9'
 set ylabel 'RMSE of the full image vs reference (linear)'
 set title 'vct points only (zoom; full image)'

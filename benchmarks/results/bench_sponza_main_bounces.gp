@@ -2,27 +2,27 @@
 set terminal pngcairo size 2100,700 enhanced font 'DejaVu Sans,10'
 set output "bench_sponza_main_bounces.png"
 $engine << EOD
-1920 0.0322809 0.010192 "default"
-8986 0.0325448 0.0108611 "bounces=4"
+1992 0.0320324 0.00948997 "default"
+8709 0.0322456 0.0100503 "bounces=4"
 EOD
 $pathtracer << EOD
-45.29 0.100829 0.0785631 "1"
-169 0.0539345 0.0399594 "4"
-689.2 0.0272064 0.0201032 "16"
-2699 0.0141749 0.0104963 "64"
+48.54 0.100829 0.0785631 "1"
+186 0.0539345 0.0399594 "4"
+689.5 0.0272064 0.0201032 "16"
+2866 0.0141749 0.0104963 "64"
 EOD
 $pareto << EOD
-1920 0.0322809 0.010192 "default"
+1992 0.0320324 0.00948997 "default"
 EOD
 $paretoIndirect << EOD
-1920 0.0322809 0.010192 "default"
+1992 0.0320324 0.00948997 "default"
 EOD
 $default << EOD
-1920 0.0322809 0.010192 "default"
+1992 0.0320324 0.00948997 "default"
 EOD
 set xtics ("1" 1, "2" 2, "5" 5, "10" 10, "20" 20, "50" 50, "100" 100, "200" 200, "500" 500, "1000" 1000, "2000" 2000, "5000" 5000, "10000" 10000, "20000" 20000, "50000" 50000, "100000" 100000, "200000" 200000, "500000" 500000)
 noise = 0.00476674
-set multiplot layout 1,3 title "sponza 320x180: error against time, vct settings and the path tracer (1 bounce, reference 512 spp), llvmpipe (LLVM 15.0.6, 256 bits), 2026-11-27" font ',12'
+set multiplot layout 1,3 title "sponza 320x180: error against time, vct settings and the path tracer (1 bounce, reference 512 spp), llvmpipe (LLVM 15.0.6, 256 bits), 2026-11-28" font ',12'
 set logscale xy
 set grid xtics ytics mxtics mytics lc rgb '#e0e0e0'
 set xlabel 'time (ms, log): vct full warm frame / path-tracer render, same CPU'
@@ -54,8 +54,8 @@ unset logscale y
 set ytics auto
 set format y '%g'
 set xtics ("100" 100, "200" 200, "500" 500, "1000" 1000, "2000" 2000, "5000" 5000, "10000" 10000, "20000" 20000, "50000" 50000, "100000" 100000, "200000" 200000, "500000" 500000)
-set xrange [1476.6:16175.2]
-set yrange [0.0321507:0.032675]
+set xrange [1532.2:15676.4]
+set yrange [0.0319034:0.0323746]
 set key top left box opaque font ',9'
 set ylabel 'RMSE of the full image vs reference (linear)'
 set title 'vct points only (zoom; full image)'

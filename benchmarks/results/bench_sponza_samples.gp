@@ -2,32 +2,31 @@
 set terminal pngcairo size 2100,700 enhanced font 'DejaVu Sans,10'
 set output "bench_sponza_samples.png"
 $engine << EOD
-2161 0.0326399 0.0114561 "default"
-2437 0.0231634 0.010462 "samples=4"
-4165 0.0134472 0.00819506 "samples=16"
+2145 0.03192 0.00920409 "default"
+2513 0.02267 0.00940947 "samples=4"
+4257 0.0128293 0.0072081 "samples=16"
 EOD
 $pathtracer << EOD
-47.22 0.100813 0.078527 "1"
-183.6 0.0538738 0.0398726 "4"
-740.5 0.0270134 0.0199552 "16"
-2973 0.0138254 0.0102089 "64"
+53.55 0.100813 0.078527 "1"
+204.9 0.0538738 0.0398726 "4"
+832.3 0.0270134 0.0199552 "16"
+3326 0.0138254 0.0102089 "64"
 EOD
 $pareto << EOD
-2161 0.0326399 0.0114561 "default"
-2437 0.0231634 0.010462 "samples=4"
-4165 0.0134472 0.00819506 "samples=16"
+2145 0.03192 0.00920409 "default"
+2513 0.02267 0.00940947 "samples=4"
+4257 0.0128293 0.0072081 "samples=16"
 EOD
 $paretoIndirect << EOD
-2161 0.0326399 0.0114561 "default"
-2437 0.0231634 0.010462 "samples=4"
-4165 0.0134472 0.00819506 "samples=16"
+2145 0.03192 0.00920409 "default"
+4257 0.0128293 0.0072081 "samples=16"
 EOD
 $default << EOD
-2161 0.0326399 0.0114561 "default"
+2145 0.03192 0.00920409 "default"
 EOD
 set xtics ("1" 1, "2" 2, "5" 5, "10" 10, "20" 20, "50" 50, "100" 100, "200" 200, "500" 500, "1000" 1000, "2000" 2000, "5000" 5000, "10000" 10000, "20000" 20000, "50000" 50000, "100000" 100000, "200000" 200000, "500000" 500000)
 noise = 0.00337035
-set multiplot layout 1,3 title "sponza 320x180: error against time, vct settings and the path tracer (1 bounce, reference 1024 spp), llvmpipe (LLVM 15.0.6, 256 bits), 2026-11-27" font ',12'
+set multiplot layout 1,3 title "sponza 320x180: error against time, vct settings and the path tracer (1 bounce, reference 1024 spp), llvmpipe (LLVM 15.0.6, 256 bits), 2026-11-28" font ',12'
 set logscale xy
 set grid xtics ytics mxtics mytics lc rgb '#e0e0e0'
 set xlabel 'time (ms, log): vct full warm frame / path-tracer render, same CPU'
@@ -59,8 +58,8 @@ unset logscale y
 set ytics auto
 set format y '%g'
 set xtics ("100" 100, "200" 200, "500" 500, "1000" 1000, "2000" 2000, "5000" 5000, "10000" 10000, "20000" 20000, "50000" 50000, "100000" 100000, "200000" 200000, "500000" 500000)
-set xrange [1661.97:7496.42]
-set yrange [0.0119118:0.0341753]
+set xrange [1650.36:7663.25]
+set yrange [0.0113021:0.0334472]
 set key top left box opaque font ',9'
 set ylabel 'RMSE of the full image vs reference (linear)'
 set title 'vct points only (zoom; full image)'
