@@ -27,6 +27,7 @@ bool nearFieldHit(vec3 direction, out vec4 seen) {
     // Along the axis to the height where the cone starts; at a grazing angle no further than
     // three times that.
     const float reach = uConeOffset * voxel / max(cosine, 1.0 / 3.0);
+    const float step = reach / float(NEAR_FIELD_STEPS);
     const vec2 size = vec2(textureSize(uPosition, 0));
     for (int i = 0; i < NEAR_FIELD_STEPS; ++i) {
         const float t = reach * (float(i) + nearFieldJitter) / float(NEAR_FIELD_STEPS);
@@ -44,7 +45,6 @@ bool nearFieldHit(vec3 direction, out vec4 seen) {
         // not far behind it along the view ray (q passes behind something nearer the camera).
         if (dot(surface.xyz - nearFieldPoint, nearFieldNormal) < 0.1 * voxel) continue;
         const vec3 surfaceNormal = texelFetch(uGeometricNormal, texel, 0).xyz;
-        const float step = reach / float(NEAR_FIELD_STEPS);
         const float behindPlane = dot(surface.xyz - q, surfaceNormal);
         const float behindAlongView = distance(q, uEye) - distance(surface.xyz, uEye);
         if (behindPlane < 0.05 * voxel || behindPlane > step + 0.1 * voxel || behindAlongView > reach) continue;

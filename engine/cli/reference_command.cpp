@@ -34,8 +34,7 @@ void run(ReferenceOptions& o) {
     if (!o.firstBounceDistance.empty()) {
         if (o.firstBounceDistance.size() != 2)
             fail("--first-bounce-distance needs two numbers: MIN,MAX (world units; MAX may be inf)");
-        settings.firstBounceNearest = float(o.firstBounceDistance[0]);
-        settings.firstBounceFarthest = float(o.firstBounceDistance[1]);
+        settings.firstBounceDistance = {float(o.firstBounceDistance[0]), float(o.firstBounceDistance[1])};
     }
     reference::validate(settings);
     const TonemapCurve curve = parseTonemapCurve(o.toneCurve);

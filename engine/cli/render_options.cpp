@@ -99,6 +99,14 @@ void addRenderSettingsOptions(CLI::App& command, RenderSettingsOptions& o) {
     command.add_flag("--no-bricks", o.noBricks, "unfiltered voxel data: cones read the nearest brick sample, voxel views each node's mean (instead of trilinear in the bricks)");
 }
 
+namespace {
+// The value of a switch given as `on` or `off`; anything else fails naming the option.
+bool parseOnOff(const std::string& value, const char* option) {
+    if (value != "on" && value != "off") fail(option, " must be on or off, not '", value, "'");
+    return value == "on";
+}
+}  // namespace
+
 RenderSettings renderSettingsFromOptions(const RenderSettingsOptions& o, const Scene& scene) {
     RenderSettings settings;
     settings.lightViewResolution = o.lightViewResolution;
@@ -112,13 +120,11 @@ RenderSettings renderSettingsFromOptions(const RenderSettingsOptions& o, const S
     settings.voxelLevels = o.voxelLevels;
     settings.voxelViewLevel = o.voxelViewLevel;
     settings.bricks = !o.noBricks;
-    if (o.gi != "on" && o.gi != "off") fail("--gi must be on or off, not '", o.gi, "'");
-    settings.gi = o.gi == "on";
+    settings.gi = parseOnOff(o.gi, "--gi");
     settings.photons = !o.noPhotons;
     settings.bounces = o.bounces;
     settings.cones = o.cones;
-    if (o.nearField != "on" && o.nearField != "off") fail("--near-field must be on or off, not '", o.nearField, "'");
-    settings.cones.nearField = o.nearField == "on";
+    settings.cones.nearField = parseOnOff(o.nearField, "--near-field");
     settings.cones.narrowConesAfterFirstSample = parseSampleCones(o.sampleCones);
     settings.giResolution = parseGiResolution(o.giResolution);
     settings.giFilter = o.giFilter;

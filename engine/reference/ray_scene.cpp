@@ -123,22 +123,28 @@ RayScene::~RayScene() {
     if (device_) rtcReleaseDevice(device_);
 }
 
+RTCRay RayScene::embreeRay(glm::vec3 origin, glm::vec3 direction, float tFar) const {
+    RTCRay ray;
+    ray.org_x = std::ldexp(origin.x, scaleExponent_);
+    ray.org_y = std::ldexp(origin.y, scaleExponent_);
+    ray.org_z = std::ldexp(origin.z, scaleExponent_);
+    ray.dir_x = direction.x;
+    ray.dir_y = direction.y;
+    ray.dir_z = direction.z;
+    ray.tnear = 0.0f;
+    ray.tfar = std::ldexp(tFar, scaleExponent_);
+    ray.time = 0.0f;
+    ray.mask = 0xffffffffu;
+    ray.id = 0;
+    ray.flags = 0;
+    return ray;
+}
+
 std::optional<SurfaceHit> RayScene::intersect(glm::vec3 origin, glm::vec3 direction, float tFar) const {
     RTCIntersectContext context;
     rtcInitIntersectContext(&context);
     RTCRayHit rh;
-    rh.ray.org_x = std::ldexp(origin.x, scaleExponent_);
-    rh.ray.org_y = std::ldexp(origin.y, scaleExponent_);
-    rh.ray.org_z = std::ldexp(origin.z, scaleExponent_);
-    rh.ray.dir_x = direction.x;
-    rh.ray.dir_y = direction.y;
-    rh.ray.dir_z = direction.z;
-    rh.ray.tnear = 0.0f;
-    rh.ray.tfar = std::ldexp(tFar, scaleExponent_);
-    rh.ray.time = 0.0f;
-    rh.ray.mask = 0xffffffffu;
-    rh.ray.id = 0;
-    rh.ray.flags = 0;
+    rh.ray = embreeRay(origin, direction, tFar);
     rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
     rh.hit.primID = RTC_INVALID_GEOMETRY_ID;
     rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
@@ -177,19 +183,7 @@ std::optional<SurfaceHit> RayScene::intersect(glm::vec3 origin, glm::vec3 direct
 bool RayScene::occluded(glm::vec3 origin, glm::vec3 direction, float tFar) const {
     RTCIntersectContext context;
     rtcInitIntersectContext(&context);
-    RTCRay ray;
-    ray.org_x = std::ldexp(origin.x, scaleExponent_);
-    ray.org_y = std::ldexp(origin.y, scaleExponent_);
-    ray.org_z = std::ldexp(origin.z, scaleExponent_);
-    ray.dir_x = direction.x;
-    ray.dir_y = direction.y;
-    ray.dir_z = direction.z;
-    ray.tnear = 0.0f;
-    ray.tfar = std::ldexp(tFar, scaleExponent_);
-    ray.time = 0.0f;
-    ray.mask = 0xffffffffu;
-    ray.id = 0;
-    ray.flags = 0;
+    RTCRay ray = embreeRay(origin, direction, tFar);
     rtcOccluded1(rtcScene_, &context, &ray);
     return ray.tfar < 0.0f;  // Embree sets tfar = −inf on a hit
 }

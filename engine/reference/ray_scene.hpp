@@ -80,6 +80,9 @@ public:
     };
 
 private:
+    // A ray of the scene (origin and tFar in its units, unit direction) as Embree's scaled one.
+    RTCRay embreeRay(glm::vec3 origin, glm::vec3 direction, float tFar) const;
+
     const Scene& scene_;
     int scaleExponent_ = 0;              // Embree's coordinates are the scene's times 2^scaleExponent_
     std::vector<glm::vec4> positions_;   // scaled; vec4 because Embree reads 16 bytes per vertex

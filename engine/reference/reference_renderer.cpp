@@ -62,8 +62,9 @@ void validate(const ReferenceSettings& s) {
     } else if (s.coneRegion != -1) {
         fail("--cone-region ", s.coneRegion, " is out of range; use -1 (every direction) or a cone of the set");
     }
-    if (!(s.firstBounceNearest >= 0.0f) || !(s.firstBounceFarthest > s.firstBounceNearest))
-        fail("--first-bounce-distance ", s.firstBounceNearest, ",", s.firstBounceFarthest,
+    const FirstBounceDistanceFilter& range = s.firstBounceDistance;
+    if (!(range.nearest >= 0.0f) || !(range.farthest > range.nearest))
+        fail("--first-bounce-distance ", range.nearest, ",", range.farthest,
              " is not a range of distances; give MIN,MAX with 0 <= MIN < MAX (world units; MAX may be inf)");
 }
 
@@ -74,7 +75,7 @@ ReferenceResult renderReference(const Scene& scene, const Camera& camera, const 
     const RayScene rays(scene, materials);
     const DeltaLights lights(scene);
     const PathTracer tracer(rays, materials, lights, settings.bounces, {settings.coneRegionSet, settings.coneRegion},
-                            {settings.firstBounceNearest, settings.firstBounceFarthest});
+                            settings.firstBounceDistance);
     const CameraRays cameraRays(camera, scene, settings.width, settings.height);
 
     ReferenceResult result;

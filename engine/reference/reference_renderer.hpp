@@ -14,9 +14,9 @@
 // each pixel's accumulators are only touched by the thread rendering its tile in that pass, in
 // pass order. The output is therefore bit-identical for any thread count and any scheduling.
 #include <cstdint>
-#include <limits>
 
 #include "core/image.hpp"
+#include "reference/path_tracer.hpp"
 #include "scene/camera.hpp"
 #include "scene/scene.hpp"
 
@@ -39,10 +39,9 @@ struct ReferenceSettings {
     // cone set of `coneRegionSet` cones (render/cone_set.hpp coneRegionOf; −1: every direction).
     int coneRegion = -1;
     int coneRegionSet = 5;
-    // Diagnostic: count only the light whose first bounce meets its surface at a distance in
-    // [firstBounceNearest, firstBounceFarthest) world units (PathTracer's FirstBounceDistanceFilter).
-    float firstBounceNearest = 0.0f;
-    float firstBounceFarthest = std::numeric_limits<float>::infinity();
+    // Diagnostic: count only the light whose first bounce meets its surface within this range of
+    // distances (`--first-bounce-distance`; default: every distance).
+    FirstBounceDistanceFilter firstBounceDistance;
 };
 
 struct ReferenceResult {

@@ -240,6 +240,11 @@ NonFiniteScan removeNonFinitePositions(aiScene& ai, const std::vector<FlatNode>&
 // generated normal is zero. For those steps each mesh is therefore brought to a size between 1
 // and 2 by a power of two, which scales a float exactly, and afterwards scaled back. Returns the
 // exponent applied to each mesh.
+void scaleMesh(aiMesh& mesh, int exponent) {
+    for (unsigned v = 0; v < mesh.mNumVertices; ++v)
+        for (int a = 0; a < 3; ++a) mesh.mVertices[v][a] = std::ldexp(mesh.mVertices[v][a], exponent);
+}
+
 std::vector<int> scaleMeshesToUnitSize(aiScene& ai) {
     std::vector<int> exponents(ai.mNumMeshes, 0);
     for (unsigned m = 0; m < ai.mNumMeshes; ++m) {
@@ -262,8 +267,7 @@ std::vector<int> scaleMeshesToUnitSize(aiScene& ai) {
         int exponent = -std::ilogb(size);  // size · 2^exponent in [1, 2)
         exponent = std::min(exponent, 100 - std::ilogb(largest));  // keep every coordinate below 2^101
         exponents[m] = exponent;
-        for (unsigned v = 0; v < mesh->mNumVertices; ++v)
-            for (int a = 0; a < 3; ++a) mesh->mVertices[v][a] = std::ldexp(mesh->mVertices[v][a], exponent);
+        scaleMesh(*mesh, exponent);
     }
     return exponents;
 }
@@ -271,9 +275,7 @@ std::vector<int> scaleMeshesToUnitSize(aiScene& ai) {
 void undoMeshScales(aiScene& ai, const std::vector<int>& exponents) {
     for (unsigned m = 0; m < ai.mNumMeshes && m < exponents.size(); ++m) {
         aiMesh* mesh = ai.mMeshes[m];
-        if (!mesh || !mesh->mVertices || exponents[m] == 0) continue;
-        for (unsigned v = 0; v < mesh->mNumVertices; ++v)
-            for (int a = 0; a < 3; ++a) mesh->mVertices[v][a] = std::ldexp(mesh->mVertices[v][a], -exponents[m]);
+        if (mesh && mesh->mVertices && exponents[m] != 0) scaleMesh(*mesh, -exponents[m]);
     }
 }
 
