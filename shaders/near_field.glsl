@@ -18,7 +18,10 @@ uniform vec3 uEye;             // scene-local
 vec3 nearFieldPoint = vec3(0.0), nearFieldNormal = vec3(0.0, 0.0, 1.0);
 float nearFieldJitter = 0.5;
 
-const int NEAR_FIELD_STEPS = 6;
+// Steps along the axis; near_detail.comp, which follows many directions at every pixel, takes fewer.
+#ifndef NEAR_FIELD_STEPS
+#define NEAR_FIELD_STEPS 6
+#endif
 
 bool nearFieldHit(vec3 direction, out vec4 seen) {
     seen = vec4(0.0);
@@ -29,10 +32,13 @@ bool nearFieldHit(vec3 direction, out vec4 seen) {
     const float reach = uConeOffset * voxel / max(cosine, 1.0 / 3.0);
     const float step = reach / float(NEAR_FIELD_STEPS);
     const vec2 size = vec2(textureSize(uPosition, 0));
+    // Clip space is linear along the ray: two products instead of one per step.
+    const vec4 clipOrigin = uViewProjection * vec4(nearFieldPoint, 1.0);
+    const vec4 clipDirection = uViewProjection * vec4(direction, 0.0);
     for (int i = 0; i < NEAR_FIELD_STEPS; ++i) {
         const float t = reach * (float(i) + nearFieldJitter) / float(NEAR_FIELD_STEPS);
         const vec3 q = nearFieldPoint + direction * t;
-        const vec4 clip = uViewProjection * vec4(q, 1.0);
+        const vec4 clip = clipOrigin + clipDirection * t;
         if (!(clip.w > 0.0)) return false;
         const vec2 at = (clip.xy / clip.w * 0.5 + 0.5) * size;
         if (any(lessThan(at, vec2(0.0))) || any(greaterThanEqual(at, size))) return false;

@@ -274,10 +274,15 @@ TEST_F(PassGraphTest, BouncesFollowTheLightsAndTheirCountNeverTheCamera) {
     renderer.setSettings(s);
     renderer.renderFrame(moved(camera));
     EXPECT_EQ(ran(renderer), (Names{Pass::ConeTrace, Pass::Composite})) << "the near field or not: no bounce again";
+    s.cones.nearDetail = false;
+    renderer.setSettings(s);
+    renderer.renderFrame(moved(camera));
+    EXPECT_EQ(ran(renderer), (Names{Pass::ConeTrace, Pass::Composite})) << "the near field's detail or not: no bounce again";
     s.cones.rays = kDefaultNarrowCones;
     s.cones.narrowConesAfterFirstSample = true;
     s.cones.reuseVoxels = kDefaultConeReuseVoxels;
     s.cones.nearField = true;
+    s.cones.nearDetail = true;
     renderer.setSettings(s);
     renderer.renderFrame(moved(camera));
     EXPECT_TRUE(renderer.readHdr().rgba == threeBounces.rgba) << "back to the narrow cones, as before";

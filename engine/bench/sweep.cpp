@@ -82,7 +82,8 @@ const std::vector<std::string>& parameterNames() {
                                                    "cone_offset",  "cone_lift",      "bricks",        "light_view_res",
                                                    "pcf_radius",   "gi",             "bounces",       "samples",
                                                    "gi_resolution", "shadow_res",    "gi_filter",     "cone_rays",
-                                                   "sample_cones", "cone_reuse",     "bounce_cone_rays", "near_field"};
+                                                   "sample_cones", "cone_reuse",     "bounce_cone_rays", "near_field",
+                                                   "near_detail"};
     return names;
 }
 
@@ -111,6 +112,8 @@ void applyParameter(PointSettings& s, const std::string& name, const Json& v) {
         s.cones.reuseVoxels = float(number(v, what, 0.0, 64.0));
     } else if (name == "near_field") {
         s.cones.nearField = boolean(v, what);
+    } else if (name == "near_detail") {
+        s.cones.nearDetail = boolean(v, what);
     } else if (name == "cone_aperture") {
         s.cones.apertureScale = float(number(v, what, 1e-3, 4.0));
     } else if (name == "cone_step") {
@@ -160,6 +163,7 @@ std::string parameterValue(const PointSettings& s, const std::string& name) {
     if (name == "sample_cones") return sampleConesName(s.cones.narrowConesAfterFirstSample);
     if (name == "cone_reuse") return formatNumber(s.cones.reuseVoxels);
     if (name == "near_field") return s.cones.nearField ? "true" : "false";
+    if (name == "near_detail") return s.cones.nearDetail ? "true" : "false";
     if (name == "cone_aperture") return formatNumber(s.cones.apertureScale);
     if (name == "cone_step") return formatNumber(s.cones.step);
     if (name == "cone_offset") return formatNumber(s.cones.offset);

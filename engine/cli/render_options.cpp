@@ -60,6 +60,12 @@ void addRenderSettingsOptions(CLI::App& command, RenderSettingsOptions& o) {
                        "the cone starts (1.5 voxels off the surface): a surface met there takes the cone's place, with "
                        "its direct light, and blocks it (on), or the cones alone (off)")
         ->capture_default_str();
+    command.add_option("--near-detail", o.nearDetail,
+                       "scale each pixel's indirect light by its visibility within the cones' start offset (the "
+                       "near field's test, 16 directions) over that visibility's mean on its surface around it: the "
+                       "shade inside creases and at the foot of walls that the traced, filtered cones cannot resolve "
+                       "(on), or the cones' light as filtered (off)")
+        ->capture_default_str();
     command.add_option("--cone-reuse", o.cones.reuseVoxels,
                        "narrow cones shared between neighbouring traced pixels: sigma in voxels of the weight a "
                        "neighbour's cones get by its distance (0: every traced pixel keeps its own cones); it lowers "
@@ -125,6 +131,7 @@ RenderSettings renderSettingsFromOptions(const RenderSettingsOptions& o, const S
     settings.bounces = o.bounces;
     settings.cones = o.cones;
     settings.cones.nearField = parseOnOff(o.nearField, "--near-field");
+    settings.cones.nearDetail = parseOnOff(o.nearDetail, "--near-detail");
     settings.cones.narrowConesAfterFirstSample = parseSampleCones(o.sampleCones);
     settings.giResolution = parseGiResolution(o.giResolution);
     settings.giFilter = o.giFilter;

@@ -25,6 +25,7 @@ struct RenderSettingsOptions {
     bool noBricks = false;
     std::string gi = "on";
     std::string nearField = "on";
+    std::string nearDetail = "on";
     bool noPhotons = false;
     int bounces = 1;
     ConeSettings cones;

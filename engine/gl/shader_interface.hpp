@@ -65,6 +65,7 @@
     X(IMAGE_PIXEL_AT, 3)             /* cone_upsample: the point each pixel's light belongs to */ \
     X(IMAGE_PIXEL_NORMAL, 4)         /* and its normal */                                         \
     X(IMAGE_CARRIED_FROM, 5)         /* cone_carry: the last frame's pixel each pixel takes light from */ \
+    X(IMAGE_NEAR_VISIBILITY, 1)      /* near_detail: each pixel's visibility within the cones' start */ \
     X(IMAGE_VOXEL_VIEW, 0)                                                                        \
     X(IMAGE_HDR, 0)                                                                               \
     X(IMAGE_LDR, 1)                                                                               \
@@ -91,6 +92,7 @@
     X(TEXTURE_TRACED_PIXEL, 13)      /* cone_upsample, indirect_filter: the pixel each block traced */ \
     X(TEXTURE_NEAR_FIELD_DIRECT, 14) /* cone_trace, cone_upsample: near_field.glsl's direct light */ \
     X(TEXTURE_NEAR_FIELD_EMISSIVE, 15) /* and emission */                                         \
+    X(TEXTURE_NEAR_VISIBILITY, 8)    /* near_detail: IMAGE_NEAR_VISIBILITY */                     \
     X(TEXTURE_VIEW_ALBEDO_BRICKS, 1) /* voxel_view: the albedo pool */                     \
     X(TEXTURE_LIGHT_POSITION, 0)     /* inject: the light-view map's photons */                   \
     X(TEXTURE_LIGHT_FLUX, 1)                                                                      \

@@ -252,7 +252,7 @@ const PassTable kFramePasses = {{
      {I::ConeSettings, I::PixelCones, I::GiResolution, I::GiFilter},
      {R::GBuffer, R::DirectRadiance, R::CellValues, R::CellRadiance, R::RadianceBricks, R::BouncedRadiance},
      {R::IndirectIrradiance}, unlessConeTrace,
-     "cone_carry.comp, cone_trace.comp, cone_reuse.comp, indirect_filter.comp, cone_upsample.comp",
+     "cone_carry.comp, cone_trace.comp, cone_reuse.comp, indirect_filter.comp, cone_upsample.comp, near_detail.comp",
      traceCones},
     {Pass::VoxelView, "voxel_view", Stage::Camera,
      {I::Camera, I::OutputSize, I::ViewSettings, I::ConeSettings, I::PixelCones},

@@ -47,7 +47,7 @@ std::size_t ConeTrace::bytes() const {
     const std::size_t blocks = traced_.id() ? std::size_t((width_ + b - 1) / b) * ((height_ + b - 1) / b) : 0;
     const std::size_t ownTraceList = ownTracePixels_.id() ? std::size_t(width_) * height_ * 4 : 0;
     return full + blocks * (16 + 4) + ownTraceList + std::size_t(lanePartsBytes_) + (reuse_ ? reuse_->bytes() : 0) +
-           (filter_ ? filter_->bytes() : 0) + (carry_ ? carry_->bytes() : 0);
+           (filter_ ? filter_->bytes() : 0) + (carry_ ? carry_->bytes() : 0) + (nearDetail_ ? nearDetail_->bytes() : 0);
 }
 
 GiResolution parseGiResolution(const std::string& name) {
@@ -190,6 +190,7 @@ ConeSettings voxelGatherCones(ConeSettings settings) {
     settings.reuseVoxels = ConeSettings{}.reuseVoxels;
     settings.carryVoxels = ConeSettings{}.carryVoxels;
     settings.nearField = ConeSettings{}.nearField;  // a voxel's cones have no G-buffer to follow
+    settings.nearDetail = ConeSettings{}.nearDetail;  // nor pixels
     return settings;
 }
 
@@ -334,6 +335,12 @@ void ConeTrace::render(const GBuffer& gbuffer, const Octree& octree, const Radia
                                    GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
         }
         if (sample == 0) carry_->remember(indirect_.id());
+    }
+    // After the carry remembers the cones' light: a later frame that carries it adds the detail of
+    // its own pixels.
+    if (frame.nearDetail) {
+        if (!nearDetail_) nearDetail_ = std::make_unique<NearDetail>(width_, height_);
+        result_ = nearDetail_->render(gbuffer, result_, directRadiance, view, octree.grid.voxelSize, settings.offset);
     }
     gl::checkErrors("tracing cones");
 }

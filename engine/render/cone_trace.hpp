@@ -14,6 +14,7 @@
 #include "render/cone_set.hpp"
 #include "render/gbuffer.hpp"
 #include "render/indirect_filter.hpp"
+#include "render/near_detail.hpp"
 
 namespace vct {
 
@@ -98,6 +99,10 @@ struct ConeSettings {
     // cone's axis is first followed against the G-buffer up to where the cone starts, and a
     // surface met there takes the cone's place; false: the cones alone.
     bool nearField = true;
+    // The near field's detail at every pixel (`--near-detail`, render/near_detail.hpp): each
+    // pixel's irradiance scaled by its visibility within the cones' start offset over the mean
+    // of that visibility on its surface around it; false: the cones' irradiance as filtered.
+    bool nearDetail = true;
 
     bool operator==(const ConeSettings&) const = default;
 };
@@ -237,7 +242,8 @@ private:
     std::unique_ptr<ConeCarry> carry_;        // sized for the traced image
     std::unique_ptr<ConeReuse> reuse_;        // sized for the traced image and cones, made on first use
     std::unique_ptr<IndirectFilter> filter_;  // sized for the traced image, made on first use
-    GLuint result_ = 0;                       // indirect_, or at full resolution the filter's image
+    std::unique_ptr<NearDetail> nearDetail_;  // made on first use
+    GLuint result_ = 0;  // indirect_, or at full resolution the filter's image; or the near detail's
 };
 
 }  // namespace vct

@@ -214,6 +214,7 @@ void settingsSection(ViewerState& state, bool& changed) {
                                 ImGuiSliderFlags_AlwaysClamp);
     changed |= ImGui::Checkbox("narrow cones in later samples (at rest)", &s.cones.narrowConesAfterFirstSample);
     changed |= ImGui::Checkbox("near field from the G-buffer", &s.cones.nearField);
+    changed |= ImGui::Checkbox("near field's detail at every pixel", &s.cones.nearDetail);
     changed |= ImGui::SliderFloat("cones shared with neighbours (voxels, 0 = off)", &s.cones.reuseVoxels, 0.0f, 16.0f,
                                   "%.1f", ImGuiSliderFlags_AlwaysClamp);
     changed |= ImGui::SliderFloat("cones carried over camera moves (voxels, 0 = off)", &s.cones.carryVoxels, 0.0f, 4.0f,
