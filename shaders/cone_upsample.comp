@@ -1,6 +1,6 @@
 #version 450
-#ifdef TRACE_LISTED
-layout(local_size_x = 64) in;  // one invocation traces all the cones of a listed pixel
+#if defined(TRACE_LISTED) || defined(SMOOTH_LISTED)
+layout(local_size_x = 64) in;  // one invocation per listed pixel
 #else
 layout(local_size_x = 8, local_size_y = 8) in;
 #endif
@@ -16,7 +16,11 @@ layout(local_size_x = 8, local_size_y = 8) in;
 // pixel takes light from the wrong surface: the upsampling lists those pixels, and a second
 // dispatch (TRACE_LISTED) traces them. Scattered among pixels that only interpolate, each would
 // hold up its whole SIMD group; listed, every invocation of the second dispatch traces, but each
-// still costs a whole trace, which is why the wider ring is asked first.
+// still costs a whole trace, which is why the wider ring is asked first. Four cones of its own,
+// which no filter averages, leave such a pixel far noisier than its neighbours (a leaf or a
+// curtain's edge black or several times too bright); so a third dispatch (SMOOTH_LISTED) averages
+// each listed pixel with the pixels around it on its own surface, listed or not, into a buffer,
+// and a fourth writes the averages back (reading neighbours that are being rewritten would race).
 #include "cone_march.glsl"
 #include "cone_trace_common.glsl"
 
@@ -33,6 +37,42 @@ void main() {
     const ivec2 pixel = unpackTracedPixel(ownTracePixels[listed]);
     storeTraced(pixel, finishTrace(gatherPixel(pixel, texelFetch(uPosition, pixel, 0).xyz,
                                                normalize(texelFetch(uNormal, pixel, 0).xyz))));
+}
+#elif defined(SMOOTH_LISTED)
+layout(std430, binding = SSBO_OWN_TRACE_SMOOTHED) buffer OwnTraceSmoothed { vec4 ownTraceSmoothed[]; };
+uniform int uWriteBack;  // 0: average into ownTraceSmoothed; 1: write the averages into the image
+
+// 5 × 5 pixels, a Gaussian of σ 1.5 pixels; a neighbour a voxel off the tangent plane keeps e⁻¹.
+const int kSmoothRadius = 2;
+const float kSmoothSigma = 1.5;
+const float kPlaneVoxels = 1.0;
+
+void main() {
+    const uint listed = linearInvocation();
+    if (listed >= coneCounters[CONE_COUNTER_OWN_TRACES]) return;
+    const ivec2 pixel = unpackTracedPixel(ownTracePixels[listed]);
+    if (uWriteBack != 0) {
+        imageStore(uIndirect, pixel, ownTraceSmoothed[listed]);
+        return;
+    }
+    const vec3 position = texelFetch(uPosition, pixel, 0).xyz;
+    const vec3 normal = normalize(texelFetch(uNormal, pixel, 0).xyz);
+    const ivec2 size = imageSize(uIndirect);
+    vec4 sum = vec4(0.0);
+    float weightSum = 0.0;
+    for (int dy = -kSmoothRadius; dy <= kSmoothRadius; ++dy)
+        for (int dx = -kSmoothRadius; dx <= kSmoothRadius; ++dx) {
+            const ivec2 q = pixel + ivec2(dx, dy);
+            if (any(lessThan(q, ivec2(0))) || any(greaterThanEqual(q, size))) continue;
+            const vec4 qPosition = texelFetch(uPosition, q, 0);
+            if (!(qPosition.w > 0.0)) continue;
+            const float w = exp(-float(dx * dx + dy * dy) / (2.0 * kSmoothSigma * kSmoothSigma)) *
+                            sameSurfaceWeight(normal, normalize(texelFetch(uNormal, q, 0).xyz),
+                                              (qPosition.xyz - position) * uVoxelScale, kPlaneVoxels);
+            sum += w * imageLoad(uIndirect, q);
+            weightSum += w;
+        }
+    ownTraceSmoothed[listed] = sum / weightSum;  // the pixel itself weighs 1
 }
 #else
 // Before any of that, a pixel that the last frame's light serves (pixel_carry.glsl: only the camera

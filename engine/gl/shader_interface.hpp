@@ -48,6 +48,7 @@
     X(SSBO_CONE_SAMPLES, 28)         /* cone_trace → cone_reuse: each narrow cone's own result */  \
     X(SSBO_TRACE_CELLS, 29)          /* cone_carry → cone_trace: the cells to trace */             \
     X(SSBO_CONE_LANE_PARTS, 30)      /* cone_trace with lanes: each lane's part, added after */    \
+    X(SSBO_OWN_TRACE_SMOOTHED, 31)   /* cone_upsample: the own-traced pixels' averaged light */   \
     /* Image units (glBindImageTexture). */                                                       \
     X(IMAGE_FRAGMENTS, 0)            /* voxel-fragment list, RGBA32UI */                          \
     X(IMAGE_FRAGMENT_NODE, 1)        /* the node of each fragment, R32UI */                       \

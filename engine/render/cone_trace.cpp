@@ -45,7 +45,7 @@ std::size_t ConeTrace::bytes() const {
     const std::size_t full = std::size_t(width_) * height_ * 16;
     const int b = std::max(tracedBlock_, 1);
     const std::size_t blocks = traced_.id() ? std::size_t((width_ + b - 1) / b) * ((height_ + b - 1) / b) : 0;
-    const std::size_t ownTraceList = ownTracePixels_.id() ? std::size_t(width_) * height_ * 4 : 0;
+    const std::size_t ownTraceList = ownTracePixels_.id() ? std::size_t(width_) * height_ * (4 + 16) : 0;
     return full + blocks * (16 + 4) + ownTraceList + std::size_t(lanePartsBytes_) + (reuse_ ? reuse_->bytes() : 0) +
            (filter_ ? filter_->bytes() : 0) + (carry_ ? carry_->bytes() : 0) + (nearDetail_ ? nearDetail_->bytes() : 0);
 }
@@ -234,7 +234,10 @@ void ConeTrace::render(const GBuffer& gbuffer, const Octree& octree, const Radia
             gl::buildProgram({{GL_COMPUTE_SHADER, "cone_upsample.comp"}}, withNearField({"TRACE_LISTED 1"}));
     if (inBlocks && !upsampleProgram_.id()) {
         upsampleProgram_ = gl::buildProgram({{GL_COMPUTE_SHADER, "cone_upsample.comp"}});
+        smoothListedProgram_ = gl::buildProgram({{GL_COMPUTE_SHADER, "cone_upsample.comp"}}, {"SMOOTH_LISTED 1"});
         ownTracePixels_ = gl::createBuffer(GLsizeiptr(4) * width_ * height_, nullptr, 0, "pixels that trace their own cones");
+        ownTraceSmoothed_ = gl::createBuffer(GLsizeiptr(16) * width_ * height_, nullptr, 0,
+                                             "own-traced pixels' light averaged over their surface");
         dispatchArgs_ = gl::createBuffer(12, nullptr, 0, "own traces' dispatch arguments");
     }
     const std::uint32_t zero = 0;
@@ -333,6 +336,15 @@ void ConeTrace::render(const GBuffer& gbuffer, const Octree& octree, const Radia
             selectBatch(call, batch);
             listDispatch_.dispatch(call, counters_, gl::OWN_TRACE_COUNT_SLOT, dispatchArgs_, 0,
                                    GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+        }
+        // Then each listed pixel averaged with the pixels around it on its own surface, into a
+        // buffer, and written back.
+        for (int writeBack = 0; writeBack < 2; ++writeBack) {
+            gl::ComputeCall call = upsampleCall(smoothListedProgram_);
+            call.storage(gl::SSBO_OWN_TRACE_SMOOTHED, ownTraceSmoothed_).uniform("uWriteBack", writeBack);
+            listDispatch_.dispatch(call, counters_, gl::OWN_TRACE_COUNT_SLOT, dispatchArgs_, 0,
+                                   GL_SHADER_STORAGE_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT |
+                                       GL_TEXTURE_FETCH_BARRIER_BIT);
         }
         if (sample == 0) carry_->remember(indirect_.id());
     }

@@ -234,9 +234,10 @@ private:
     std::array<gl::Program, 2> traceListedPrograms_;
     gl::Buffer laneParts_;  // with lanes: each listed cell's lanes' parts, made on first use
     GLsizeiptr lanePartsBytes_ = 0;
-    gl::Program upsampleProgram_;
+    gl::Program upsampleProgram_, smoothListedProgram_;
     gl::Buffer counters_;
     gl::Buffer ownTracePixels_, dispatchArgs_;  // cone_upsample's list of pixels that trace their own
+    gl::Buffer ownTraceSmoothed_;               // and their light averaged over their surface
     gl::Buffer traceArgs_;                      // the dispatch arguments of cone_carry's list of cells
     ListDispatch listDispatch_;
     std::unique_ptr<ConeCarry> carry_;        // sized for the traced image
