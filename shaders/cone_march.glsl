@@ -538,11 +538,7 @@ vec4 gatherNarrowCones(vec3 origin, vec3 normal, vec3 surfaceNormal, vec2 shift)
     // here, not there, and one lane and four would differ in their last bits.
     precise vec4 gathered = vec4(0.0);
     for (int k = uRayFirst + coneLane; k < uRayEnd; k += coneLanes) {
-        const vec2 point = narrowConePoint(k, count, shift, uRaySequence);
-        float sin2 = point.x;
-        float azimuth = 2.0 * PI * point.y;
-        float sinTheta = sqrt(sin2);
-        vec3 d = vec3(sinTheta * cos(azimuth), sinTheta * sin(azimuth), sqrt(max(1.0 - sin2, 0.0)));
+        vec3 d = cosineWeightedDirection(narrowConePoint(k, count, shift, uRaySequence));
         if (uOnlyCone >= 0 && coneRegionOf(uConeCount, d) != uOnlyCone) continue;
         vec3 direction = normalize(d.x * tangent + d.y * bitangent + d.z * normal);
         vec4 cone = vec4(0.0, 0.0, 0.0, 1.0);

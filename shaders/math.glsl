@@ -10,3 +10,12 @@ void orthonormalBasis(vec3 n, out vec3 tangent, out vec3 bitangent) {
     tangent = vec3(1.0 + s * n.x * n.x * a, s * b, -s * n.x);
     bitangent = vec3(b, s + n.y * n.y * a, -n.y);
 }
+
+// The tangent-space direction (z along the normal) of a point of the unit square read as
+// (sin²θ, azimuth / 2π): uniform points give cosine-weighted directions.
+vec3 cosineWeightedDirection(vec2 point) {
+    float sin2 = point.x;
+    float azimuth = 2.0 * PI * point.y;
+    float sinTheta = sqrt(sin2);
+    return vec3(sinTheta * cos(azimuth), sinTheta * sin(azimuth), sqrt(max(1.0 - sin2, 0.0)));
+}

@@ -28,12 +28,13 @@ uniform int uBlock;
 #ifdef NEAR_VISIBILITY
 #define NEAR_FIELD_STEPS 4
 #include "near_field.glsl"
+#include "narrow_cone_directions.glsl"
 layout(r32f, binding = IMAGE_NEAR_VISIBILITY) uniform writeonly image2D uVisibility;
 
-// Eight directions, a Fibonacci lattice over the cosine-weighted hemisphere, four steps along each
-// (near_field.glsl's six serve one cone; here every pixel follows eight): the same set at every
-// pixel, so V carries no noise of its own (a jittered set would print its noise into the image at
-// one sample per pixel).
+// Eight directions, the narrow cones' Fibonacci lattice over the cosine-weighted hemisphere (not
+// shifted), four steps along each (near_field.glsl's six serve one cone; here every pixel follows
+// eight): the same set at every pixel, so V carries no noise of its own (a jittered set would
+// print its noise into the image at one sample per pixel).
 const int DIRECTIONS = 8;
 
 void main() {
@@ -49,16 +50,12 @@ void main() {
     nearFieldPoint = position.xyz;
     nearFieldNormal = normal;
     nearFieldJitter = 0.5;
-    const vec3 tangent = normalize(abs(normal.x) < 0.9 ? cross(normal, vec3(1.0, 0.0, 0.0)) : cross(normal, vec3(0.0, 1.0, 0.0)));
-    const vec3 bitangent = cross(normal, tangent);
-    const float goldenFraction = 0.6180339887;
+    vec3 tangent, bitangent;
+    orthonormalBasis(normal, tangent, bitangent);
     int open = 0;
     for (int k = 0; k < DIRECTIONS; ++k) {
-        const float sinThetaSquared = (float(k) + 0.5) / float(DIRECTIONS);
-        const float phi = 2.0 * PI * fract(float(k) * goldenFraction);
-        const float sinTheta = sqrt(sinThetaSquared);
-        const vec3 direction = tangent * (sinTheta * cos(phi)) + bitangent * (sinTheta * sin(phi)) +
-                               normal * sqrt(1.0 - sinThetaSquared);
+        const vec3 d = cosineWeightedDirection(narrowConePoint(k, float(DIRECTIONS), vec2(0.0), -1));
+        const vec3 direction = d.x * tangent + d.y * bitangent + d.z * normal;
         vec4 seen;
         if (!nearFieldHit(direction, seen)) ++open;
     }

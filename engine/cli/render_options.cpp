@@ -62,7 +62,7 @@ void addRenderSettingsOptions(CLI::App& command, RenderSettingsOptions& o) {
         ->capture_default_str();
     command.add_option("--near-detail", o.nearDetail,
                        "scale each pixel's indirect light by its visibility within the cones' start offset (the "
-                       "near field's test, 16 directions) over that visibility's mean on its surface around it: the "
+                       "near field's test, 8 directions) over that visibility's mean on its surface around it: the "
                        "shade inside creases and at the foot of walls that the traced, filtered cones cannot resolve "
                        "(on), or the cones' light as filtered (off)")
         ->capture_default_str();

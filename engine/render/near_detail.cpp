@@ -21,23 +21,22 @@ NearDetail::NearDetail(int width, int height)
     : width_(width),
       height_(height),
       block_(visibilityBlock(width, height)),
-      visibility_(gl::createTexture2D(GL_R32F, (width + block_ - 1) / block_, (height + block_ - 1) / block_, 1,
-                                      "near-field visibility")),
+      cellsWide_((width + block_ - 1) / block_),
+      cellsHigh_((height + block_ - 1) / block_),
+      visibility_(gl::createTexture2D(GL_R32F, cellsWide_, cellsHigh_, 1, "near-field visibility")),
+      means_(gl::createTexture2D(GL_RG32F, cellsWide_, cellsHigh_, 1, "near-field visibility and its mean")),
       detailed_(gl::createTexture2D(GL_RGBA32F, width, height, 1, "indirect irradiance with the near field's detail")),
-      means_(gl::createTexture2D(GL_RG32F, (width + block_ - 1) / block_, (height + block_ - 1) / block_, 1,
-                                 "near-field visibility and its mean")),
       visibilityProgram_(gl::buildProgram({{GL_COMPUTE_SHADER, "near_detail.comp"}}, {"NEAR_VISIBILITY 1"})),
       meanProgram_(gl::buildProgram({{GL_COMPUTE_SHADER, "near_detail.comp"}}, {"NEAR_MEAN 1"})),
       detailProgram_(gl::buildProgram({{GL_COMPUTE_SHADER, "near_detail.comp"}})) {}
 
 std::size_t NearDetail::visibilityBytes() const {
-    return std::size_t((width_ + block_ - 1) / block_) * ((height_ + block_ - 1) / block_) * (4 + 8);
+    return std::size_t(cellsWide_) * cellsHigh_ * (4 + 8);
 }
 
 GLuint NearDetail::render(const GBuffer& gbuffer, GLuint indirect, GLuint directRadiance, const ViewTransform& view,
                           double voxelSize, float coneOffset) {
     const float voxelScale = float(1.0 / voxelSize);
-    const int cellsWide = (width_ + block_ - 1) / block_, cellsHigh = (height_ + block_ - 1) / block_;
     gl::ComputeCall(visibilityProgram_)
         .texture(gl::TEXTURE_GBUFFER_POSITION, gbuffer.position())
         .texture(gl::TEXTURE_GBUFFER_NORMAL, gbuffer.normal())
@@ -50,7 +49,7 @@ GLuint NearDetail::render(const GBuffer& gbuffer, GLuint indirect, GLuint direct
         .uniform("uViewProjection", view.viewProjection)
         .uniform("uEye", view.eye)
         .uniform("uBlock", block_)
-        .dispatchImage(cellsWide, cellsHigh, GL_TEXTURE_FETCH_BARRIER_BIT);
+        .dispatchImage(cellsWide_, cellsHigh_, GL_TEXTURE_FETCH_BARRIER_BIT);
     gl::ComputeCall(meanProgram_)
         .texture(gl::TEXTURE_GBUFFER_POSITION, gbuffer.position())
         .texture(gl::TEXTURE_GBUFFER_NORMAL, gbuffer.normal())
@@ -59,7 +58,7 @@ GLuint NearDetail::render(const GBuffer& gbuffer, GLuint indirect, GLuint direct
         .uniform("uVoxelScale", voxelScale)
         .uniform("uBlock", block_)
         .uniform("uTapSpacing", std::max(1, tapSpacingPixels(height_) / block_))
-        .dispatchImage(cellsWide, cellsHigh, GL_TEXTURE_FETCH_BARRIER_BIT);
+        .dispatchImage(cellsWide_, cellsHigh_, GL_TEXTURE_FETCH_BARRIER_BIT);
     gl::ComputeCall(detailProgram_)
         .texture(gl::TEXTURE_GBUFFER_POSITION, gbuffer.position())
         .texture(gl::TEXTURE_GBUFFER_NORMAL, gbuffer.normal())

@@ -29,7 +29,8 @@ public:
 private:
     std::size_t visibilityBytes() const;
     int width_, height_;
-    int block_;  // pixels per side of a visibility cell
+    int block_;                   // pixels per side of a visibility cell
+    int cellsWide_, cellsHigh_;   // the visibility cells
     gl::Texture visibility_, means_, detailed_;  // per cell: V; (V, V̄); per pixel: the result
     gl::Program visibilityProgram_, meanProgram_, detailProgram_;
 };
