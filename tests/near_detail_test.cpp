@@ -32,7 +32,7 @@ std::vector<float> readRgba(GLuint texture, int width, int height) {
 }
 
 // Below 360 lines the visibility is followed at every pixel, from there up at one of each 2×2 block.
-void expectCreaseDarkAndOpenFloorUntouched(int kWidth, int kHeight) {
+void expectCreaseDarkAndOpenFloorUntouched(int width, int height) {
     auto context = gl::createContext(gl::defaultBackend());
     test::ObjWriter obj;
     obj.material("grey", glm::vec3(0.5f));
@@ -43,20 +43,20 @@ void expectCreaseDarkAndOpenFloorUntouched(int kWidth, int kHeight) {
     camera.eye = {-2.5, 2.0, 0.3};  // looking down at the floor before the box's −x side
     camera.target = {0.0, 0.2, 0.0};
     GpuScene gpuScene(scene);
-    GBuffer gbuffer(kWidth, kHeight);
-    const ViewTransform view = cameraView(camera, scene, kWidth, kHeight);
+    GBuffer gbuffer(width, height);
+    const ViewTransform view = cameraView(camera, scene, width, height);
     gbuffer.render(gpuScene, view);
 
     // Irradiance 1 and the cones' visibility 0.5 at every pixel.
-    std::vector<float> input(std::size_t(kWidth) * kHeight * 4);
+    std::vector<float> input(std::size_t(width) * height * 4);
     for (std::size_t i = 0; i < input.size(); i += 4) input[i] = input[i + 1] = input[i + 2] = 1.0f, input[i + 3] = 0.5f;
-    gl::Texture indirect = gl::createTexture2D(GL_RGBA32F, kWidth, kHeight, 1, "test irradiance");
-    glTextureSubImage2D(indirect.id(), 0, 0, 0, kWidth, kHeight, GL_RGBA, GL_FLOAT, input.data());
-    gl::Texture direct = gl::createTexture2D(GL_RGBA32F, kWidth, kHeight, 1, "test direct light");
-    NearDetail detail(kWidth, kHeight);
+    gl::Texture indirect = gl::createTexture2D(GL_RGBA32F, width, height, 1, "test irradiance");
+    glTextureSubImage2D(indirect.id(), 0, 0, 0, width, height, GL_RGBA, GL_FLOAT, input.data());
+    gl::Texture direct = gl::createTexture2D(GL_RGBA32F, width, height, 1, "test direct light");
+    NearDetail detail(width, height);
     const std::vector<float> output =
-        readRgba(detail.render(gbuffer, indirect.id(), direct.id(), view, kVoxelSize, kConeOffset), kWidth, kHeight);
-    const std::vector<float> position = readRgba(gbuffer.position(), kWidth, kHeight);
+        readRgba(detail.render(gbuffer, indirect.id(), direct.id(), view, kVoxelSize, kConeOffset), width, height);
+    const std::vector<float> position = readRgba(gbuffer.position(), width, height);
 
     // The G-buffer holds scene-local points, centred on the scene's bounds: the floor lies at
     // y = −kBoxHeight / 2, and x is shifted by the bounds' centre (the floor's, x = 0).
@@ -65,7 +65,7 @@ void expectCreaseDarkAndOpenFloorUntouched(int kWidth, int kHeight) {
     int creasePixels = 0, openPixels = 0, patchPixels = 0;
     double creaseSum = 0.0, patchSum = 0.0;
     float openLowest = 1.0f, openHighest = 1.0f;
-    for (int i = 0; i < kWidth * kHeight; ++i) {
+    for (int i = 0; i < width * height; ++i) {
         const float* p = &position[std::size_t(i) * 4];
         const float* out = &output[std::size_t(i) * 4];
         ASSERT_EQ(out[3], 0.5f) << "the cones' visibility is left as it was";
@@ -93,7 +93,7 @@ void expectCreaseDarkAndOpenFloorUntouched(int kWidth, int kHeight) {
     const double creaseMean = creaseSum / creasePixels, patchMean = patchSum / patchPixels;
     std::printf("[ near detail ] %dx%d: crease %.3f over %d pixels, the half metre before the side %.3f over %d, open floor "
                 "%.3f..%.3f over %d\n",
-                kWidth, kHeight, creaseMean, creasePixels, patchMean, patchPixels, openLowest, openHighest, openPixels);
+                width, height, creaseMean, creasePixels, patchMean, patchPixels, openLowest, openHighest, openPixels);
     EXPECT_LT(creaseMean, 0.9) << "the crease at the box's foot (1 without the detail)";
     EXPECT_EQ(openLowest, 1.0f) << "open floor untouched";
     EXPECT_EQ(openHighest, 1.0f) << "open floor untouched";
