@@ -444,9 +444,11 @@ vec4 traceCone(vec3 origin, vec3 normal, vec3 direction, float tanHalfAngle) {
         ++samplesTaken;
         // value = (L·τ, τ): τ is the optical depth per voxel length, so the step of
         // uConeStep × diameter voxels has opacity 1 − exp(−τ·step); its radiance is L = rgb/τ.
+        // The directions' sum is negative where the sample sees the dark side of a surface lit at
+        // an angle to the axes (radiance_normalize.comp, darkSideSigned): it sends nothing.
         float step = stepLength(diameter, lod);
         float alpha = opacityOver(value.a, step);
-        vec3 radiance = value.a > 1e-6 ? value.rgb * (alpha / value.a) : vec3(0.0);
+        vec3 radiance = value.a > 1e-6 ? max(value.rgb * (alpha / value.a), vec3(0.0)) : vec3(0.0);
         accumulated.rgb += (1.0 - accumulated.a) * radiance;
         accumulated.a += (1.0 - accumulated.a) * alpha;
         t += step;

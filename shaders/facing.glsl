@@ -1,6 +1,7 @@
 // Which share of a leaf voxel's outgoing radiance L travels back along a cone going along the
 // pool direction i (+x −x +y −y +z −z for i = 0..5), as a factor on L seen through the voxel's
-// opacity along that axis (radiance_normalize.comp computes the six from the voxel's photons).
+// opacity along that axis (radiance_normalize.comp computes the six from the voxel's photons;
+// negative on the dark side of a surface lit at an angle to the axes, for the cones' sum).
 // A lit surface sends its reflected light to the side the light came from: a cone must not
 // gather the floor it starts from, or a surface lit from the other side of a wall; and a folded or
 // curved surface sends more of it towards the side its lit parts face. Emission leaves both ways.

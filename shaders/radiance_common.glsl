@@ -57,7 +57,10 @@ uint bordersAround(const uint around[27]) {
 // section), `alpha` its opacity (1 − mean transmittance), `tau` its density, `length` its length
 // (voxels). Stored as L·τ, L = seen / α being the radiance of a uniform medium of that opacity
 // that sends `seen`; for an almost empty slab α ≈ τ·length, so the value tends to seen / length.
+// Negative where the slab shows the dark side of a surface lit at an angle to the axes
+// (radiance_normalize.comp, darkSideSigned): kept, for the cone that adds it to what it reads
+// along the other axes (cone_march.glsl, traceCone clips the sum).
 vec4 slabRadiance(vec3 seen, float alpha, float tau, float length) {
-    vec3 premultiplied = max(alpha > 1e-4 ? seen * (tau / alpha) : seen / length, vec3(0.0));
+    vec3 premultiplied = alpha > 1e-4 ? seen * (tau / alpha) : seen / length;
     return vec4(premultiplied, tau);
 }

@@ -55,6 +55,24 @@ dvec3 litPlaceSums(uint cell) {
     return dvec3(wideSum(base), wideSum(base + 2u), wideSum(base + 4u));
 }
 
+// The six shares as the cones read them: a cone mixes the axes it travels along by |d_a|
+// (cone_march.glsl), so a surface whose lit side faces +x and −z at once (a wall at 45° to the
+// grid) would show its −z light to a cone that travels +x and +z, coming from its dark side: that
+// cone reads the −z share by d_z and the zero −x share by d_x, where the surface sends it
+// max(n·ω, 0) = 0. On the dark side of each axis the share is therefore negative by what the lit
+// side sends on the other axes, up to the lit side's own share: for one flat surface the cone's
+// sum is then n·ω, which its samples clip at 0 (cone_march.glsl, traceCone). A surface that faces
+// one axis keeps its 0 there (it cannot show light on another axis), and a voxel lit on both
+// sides of an axis (a sheet lit from either side, a fold) keeps what each side sends. `toward`:
+// the flux-weighted mean of max(±n_a, 0) towards the side wanted, `away` towards the other.
+vec3 darkSideSigned(vec3 toward, vec3 away) {
+    vec3 lit = max(toward, away), dark = min(toward, away);
+    vec3 oneSided = (lit - dark) / max(lit + dark, vec3(1e-30));  // 1: lit on one side only, 0: both alike
+    vec3 otherAxes = vec3(max(lit.y, lit.z), max(lit.x, lit.z), max(lit.x, lit.y));
+    vec3 signedDark = dark - oneSided * min(otherAxes, lit);
+    return mix(toward, signedDark, lessThan(toward, away));
+}
+
 void main() {
     bool valid;
     uint node = workNode(valid);
@@ -95,8 +113,8 @@ void main() {
     // L_p·A_p is its share of the flux: so the voxel sends towards e the flux-weighted mean of
     // max(n·e, 0) over its photons' lit-side normals, times L·A (A: its surface, in voxel faces).
     // Seen along axis a through its opacity α_a, that is L·(A·mean max(n·e, 0)/α_a): the share
-    // below, 1 on the lit side of a flat surface (A·|n_a| = α_a) and 0 on its dark side, but for a
-    // curtain's folds or a column's curve it follows the lit parts: a fold lit from above is
+    // below, 1 on the lit side of a flat surface (A·|n_a| = α_a) and at most 0 on its dark side
+    // (darkSideSigned), but for a curtain's folds or a column's curve it follows the lit parts: a fold lit from above is
     // brighter seen from above than its mean radiance, and darker from below, where a single mean
     // normal gave every direction in front of it the mean. Emission leaves every way.
     float reflectedShare = dot(radiance, vec3(1.0)) / max(dot(radiance + emitted, vec3(1.0)), 1e-30);
@@ -107,8 +125,8 @@ void main() {
     vec3 meanMinus = litWeight > 0.0lf ? min(vec3(litMinus / litWeight), vec3(1.0)) : vec3(0.0);
     vec3 perOpacity = float(area) / max(opacity, vec3(1e-3));
     // Towards −a (what a cone travelling along +a meets) and towards +a.
-    vec3 towardMinus = min(meanMinus * perOpacity, vec3(MAX_EXIT_SHARE));
-    vec3 towardPlus = min(meanPlus * perOpacity, vec3(MAX_EXIT_SHARE));
+    vec3 towardMinus = clamp(darkSideSigned(meanMinus, meanPlus) * perOpacity, vec3(-MAX_EXIT_SHARE), vec3(MAX_EXIT_SHARE));
+    vec3 towardPlus = clamp(darkSideSigned(meanPlus, meanMinus) * perOpacity, vec3(-MAX_EXIT_SHARE), vec3(MAX_EXIT_SHARE));
     float emittedShare = 1.0 - reflectedShare;
     storeExitShares(cell, emittedShare + reflectedShare * vec4(towardMinus.x, towardPlus.x, towardMinus.y, towardPlus.y),
                     emittedShare + reflectedShare * vec2(towardMinus.z, towardPlus.z));

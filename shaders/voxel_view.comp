@@ -37,7 +37,7 @@ vec3 nodeRadiance(uint node, vec3 inBrick) {
     vec3 sum = vec3(0.0);
     for (int i = 0; i < 6; ++i) {
         vec4 d = texture(uDirectional, (vec3(directionalBrickOrigin(node, i)) + inBrick) / poolSize);
-        if (d.a > 1e-6) sum += d.rgb / d.a;
+        if (d.a > 1e-6) sum += max(d.rgb / d.a, vec3(0.0));  // a surface's dark side: nothing (radiance_common.glsl)
     }
     return sum / 6.0;
 }
@@ -50,7 +50,7 @@ vec3 cellRadianceSeen(uint cell, vec3 direction) {
     vec4 opacity = unpackUnorm4x8(cellOpacity[cell]);
     vec4 seen = vec4(0.0);
     for (int a = 0; a < 3; ++a) seen += abs(direction[a]) * voxelSeenAlong(cell, 2 * a + (direction[a] < 0.0 ? 1 : 0), opacity[a]);
-    return seen.a > 0.0 ? seen.rgb / seen.a : vec3(0.0);
+    return seen.a > 0.0 ? max(seen.rgb / seen.a, vec3(0.0)) : vec3(0.0);  // as a cone's sample (traceCone)
 }
 
 // (value·τ, τ) of a node at p, seen along `direction`: albedo or radiance, τ the geometry's (per

@@ -339,6 +339,36 @@ TEST(GiAccuracy, ASheetBetweenASunlitRoomAndAClosedOneKeepsItDark) {
     EXPECT_LE(leak.largest, kSheetLargestPixel);
 }
 
+TEST(GiAccuracy, ASheetAtAnAngleToTheGridShowsItsLightOnItsLitSideOnly) {
+    // A sheet 2 m square standing at 45° to the x and z axes, lit by a low sun on the side facing
+    // +x and −z. The voxels' light seen from its other side at a grazing angle (`--view radiance`:
+    // what each voxel sends towards the eye, mixed over the axes as a cone mixes them) must be
+    // nothing: read along z alone, the lit side's share towards −z showed a ray that travels +x
+    // and +z, coming from the dark side, half the light the lit side shows at that angle
+    // (radiance_normalize.comp, darkSideSigned).
+    const auto dir = test::testDir() / "turned_sheet";
+    std::filesystem::create_directories(dir);
+    const glm::vec3 litSide = glm::normalize(glm::vec3(1.0f, 0.0f, -1.0f)), along = glm::normalize(glm::vec3(1.0f, 0.0f, 1.0f));
+    const glm::vec3 centre(0.0f, 1.0f, 0.0f), up(0.0f, 1.0f, 0.0f);
+    test::ObjWriter model;
+    model.material("white", glm::vec3(0.8f));
+    model.quad(centre - along - up, centre + along - up, centre + along + up, centre - along + up);
+    const std::string scene = "--scene " + model.write(dir, "sheet").string() +
+                              " --sun-dir -0.6718,-0.3,0.6718 --sun-irradiance 10 --target 0,1,0 --fov 60 --width 64 "
+                              "--height 48 --view radiance";
+    const auto meanOf = [&](const std::string& name, glm::vec3 eye) {
+        return greyStats(render(dir, name, scene + vectorOption("--eye", glm::dvec3(eye))), 0, 64, 0, 48);
+    };
+    const GreyStats lit = meanOf("lit", centre + 2.0f * litSide);
+    const GreyStats darkLeft = meanOf("dark_left", centre - 0.5f * litSide - 2.0f * along);
+    const GreyStats darkRight = meanOf("dark_right", centre - 0.5f * litSide + 2.0f * along);
+    std::printf("[ leak     ] sheet at 45° to the grid: voxels' light seen from its lit side %.3f, from its dark side "
+                "%.5f and %.5f (largest pixel %.5f)\n",
+                lit.mean, darkLeft.mean, darkRight.mean, std::max(darkLeft.largest, darkRight.largest));
+    EXPECT_GT(lit.mean, 0.5);  // the lit side is seen, and lit
+    EXPECT_LE(std::max(darkLeft.largest, darkRight.largest), 1e-4 * lit.mean);
+}
+
 TEST(GiAccuracy, TwoLightsGiveTheSumOfTheirIndirectLight) {
     // Light adds up: the sun outside a room of walls of no thickness (through a hole in its roof)
     // and a point light inside it. Each wall voxel holds both faces, lit outside by the sun and
