@@ -30,6 +30,10 @@ namespace {
 // Measured (docs/benchmark.md) and the bounds asserted, with room for noise.
 constexpr double kLeakMean = 0.005, kLeakLargestPixel = 0.02;  // of the lit floor's radiance
 constexpr double kSheetLargestPixel = 0.05;  // the pixels within a voxel of the sheet (frame.md, Known limits)
+// The rooms turned 45° to the grid, room B's end wall lit from outside by a low sun: measured 0.39 %
+// on average and 67 % at the worst pixel (0.69 % and 84 % before the exit shares were signed on a
+// slanted surface's dark side); benchmarks/turned_rooms.sh's other alignment of the grid 0.71 %.
+constexpr double kTurnedRoomLeakMean = 0.005, kTurnedRoomLeakLargestPixel = 0.75;
 constexpr double kUnderSheetMean = 0.015, kUnderSheetLargestPixel = 0.02;  // of π·Le
 // The default (4 narrow cones) on Cornell: issue 12's bounds (the cone set's cells reached 0.46..1.37).
 constexpr double kCornellMean[2] = {0.9, 1.1}, kCornellCells[2] = {0.75, 1.33};
@@ -108,11 +112,23 @@ void expectIndirectWithin(const IndirectPair& parts, const char* what, double me
     }
 }
 
+// `p` turned by `radians` about the vertical through the origin.
+glm::dvec3 aboutVertical(glm::dvec3 p, double radians) {
+    return {std::cos(radians) * p.x + std::sin(radians) * p.z, p.y, -std::sin(radians) * p.x + std::cos(radians) * p.z};
+}
+
+std::string vectorOption(const char* name, glm::dvec3 v) {
+    char text[128];
+    std::snprintf(text, sizeof text, " %s %.6f,%.6f,%.6f", name, v.x, v.y, v.z);
+    return text;
+}
+
 // Two rooms side by side under one roof: room A (x in [0, 1]) open to the sky through a hole in
 // its ceiling, room B (beyond the wall, x in [1 + w, 2 + w]) closed; the wall between them is
 // `wallVoxels` voxels of a 256³ grid thick (0: a single sheet, lying on the cell face x = 128).
-// All surfaces single-sided planes of albedo 0.8.
-std::filesystem::path writeTwoRooms(const std::filesystem::path& dir, double wallVoxels) {
+// All surfaces single-sided planes of albedo 0.8. Turned by `turn` radians about the vertical
+// through the origin (the wall's thickness in voxels is then that of the unturned rooms' grid).
+std::filesystem::path writeTwoRooms(const std::filesystem::path& dir, double wallVoxels, double turn = 0.0) {
     const double w = wallVoxels * 2.0 / (256.0 - wallVoxels);  // the grid spans the scene's 2 + w
     const double W = 2.0 + w, a = 1.0 + w;
     std::ofstream(dir / "rooms.mtl") << "newmtl white\nKd 0.8 0.8 0.8\n";
@@ -120,7 +136,10 @@ std::filesystem::path writeTwoRooms(const std::filesystem::path& dir, double wal
     obj << "mtllib rooms.mtl\nusemtl white\n";
     int vertices = 0;
     auto quad = [&](std::initializer_list<glm::dvec3> corners) {
-        for (const glm::dvec3& c : corners) obj << "v " << c.x << " " << c.y << " " << c.z << "\n";
+        for (const glm::dvec3& corner : corners) {
+            const glm::dvec3 c = aboutVertical(corner, turn);
+            obj << "v " << c.x << " " << c.y << " " << c.z << "\n";
+        }
         obj << "f " << vertices + 1 << " " << vertices + 2 << " " << vertices + 3 << " " << vertices + 4 << "\n";
         vertices += 4;
     };
@@ -160,21 +179,25 @@ GreyStats greyStats(const ImageF& image, int x0, int x1, int y0, int y1) {
 
 // One bounce cannot bring any light into room B: everything it sees is unlit. A cone from B
 // must neither see room A's light through the wall, nor the sunlit top of B's own ceiling.
-// Returns room B's indirect radiance over the lit floor's.
-GreyStats closedRoomLeak(double wallVoxels, const std::string& engineOptions = "") {
-    const auto dir = test::testDir() / ("wall_" + std::to_string(wallVoxels));
+// Returns room B's indirect radiance over the lit floor's. `turnDegrees` turns the rooms, their
+// camera and `sun` (the direction its light travels, in the rooms' own frame) about the vertical.
+GreyStats closedRoomLeak(double wallVoxels, const std::string& engineOptions = "", double turnDegrees = 0.0,
+                         glm::dvec3 sun = {0.3, -1.0, 0.2}) {
+    const double turn = glm::radians(turnDegrees);
+    const auto dir = test::testDir() / ("wall_" + std::to_string(wallVoxels) + "_turn_" + std::to_string(int(turnDegrees)));
     std::filesystem::create_directories(dir);
-    const auto model = writeTwoRooms(dir, wallVoxels);
-    const std::string sun = " --sun-dir 0.3,-1,0.2 --sun-irradiance 10";
-    const double litFloor = 0.8 / kPi * 10.0 / std::sqrt(0.09 + 1.0 + 0.04);  // ρ/π·E·cosθ
-    const std::string view = "--scene " + model.string() + sun +
-                             " --eye 1.5,0.7,0.03 --target 1.6,0.2,0.9 --fov 100 --width 96 --height 72" + engineOptions;
+    const auto model = writeTwoRooms(dir, wallVoxels, turn);
+    const double litFloor = 0.8 / kPi * 10.0 * -sun.y / glm::length(sun);  // ρ/π·E·cosθ
+    const std::string view = "--scene " + model.string() + vectorOption("--sun-dir", aboutVertical(sun, turn)) +
+                             " --sun-irradiance 10" + vectorOption("--eye", aboutVertical({1.5, 0.7, 0.03}, turn)) +
+                             vectorOption("--target", aboutVertical({1.6, 0.2, 0.9}, turn)) +
+                             " --fov 100 --width 96 --height 72" + engineOptions;
     const ImageF indirect = bench::subtractImages(render(dir, "b_final", view), render(dir, "b_direct", view + " --aov direct"));
     const GreyStats room = greyStats(indirect, 0, indirect.width, 0, indirect.height);
     const GreyStats leak{room.mean / litFloor, room.largest / litFloor};
-    std::printf("[ leak     ] closed room, wall %.1f voxels thick%s: indirect radiance mean %.3f %%, largest pixel %.2f %% "
-                "of the lit floor's\n",
-                wallVoxels, engineOptions.c_str(), 100.0 * leak.mean, 100.0 * leak.largest);
+    std::printf("[ leak     ] closed room, wall %.1f voxels thick, turned %.0f°%s: indirect radiance mean %.3f %%, largest "
+                "pixel %.2f %% of the lit floor's\n",
+                wallVoxels, turnDegrees, engineOptions.c_str(), 100.0 * leak.mean, 100.0 * leak.largest);
     return leak;
 }
 
@@ -187,17 +210,6 @@ std::filesystem::path writeWallOnAFloorAtTheTopOfItsNode(const std::filesystem::
     model.floor(0.0f, 20.0f);
     model.box({-4.0f, 0.0f, -0.15f}, {4.0f, 5.122f, 0.15f});
     return model.write(dir, "wall");
-}
-
-// `p` turned by `radians` about the vertical through the origin.
-glm::dvec3 aboutVertical(glm::dvec3 p, double radians) {
-    return {std::cos(radians) * p.x + std::sin(radians) * p.z, p.y, -std::sin(radians) * p.x + std::cos(radians) * p.z};
-}
-
-std::string vectorOption(const char* name, glm::dvec3 v) {
-    char text[128];
-    std::snprintf(text, sizeof text, " %s %.6f,%.6f,%.6f", name, v.x, v.y, v.z);
-    return text;
 }
 
 // The built-in Cornell box, its camera and its spot light turned by `degrees` about the vertical
@@ -337,6 +349,16 @@ TEST(GiAccuracy, ASheetBetweenASunlitRoomAndAClosedOneKeepsItDark) {
     const GreyStats leak = closedRoomLeak(0.0);
     EXPECT_LE(leak.mean, kLeakMean);
     EXPECT_LE(leak.largest, kSheetLargestPixel);
+}
+
+TEST(GiAccuracy, AClosedRoomTurnedToTheGridLeaksNoMoreThanItsKnownLimit) {
+    // A guard on a known leak (frame.md, Known limits): the rooms turned 45° to the grid, room B's
+    // end wall (a sheet) lit from outside by a low sun. One bounce brings room B nothing; the
+    // bricks still let some of the wall's lit side through, about half of what they did before the
+    // exit shares were signed on the dark side (radiance_normalize.comp, darkSideSigned).
+    const GreyStats leak = closedRoomLeak(0.0, "", 45.0, {-0.95, -0.3, 0.0});
+    EXPECT_LE(leak.mean, kTurnedRoomLeakMean);
+    EXPECT_LE(leak.largest, kTurnedRoomLeakLargestPixel);
 }
 
 TEST(GiAccuracy, ASheetAtAnAngleToTheGridShowsItsLightOnItsLitSideOnly) {
