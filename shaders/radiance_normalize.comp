@@ -114,9 +114,11 @@ void main() {
     // max(n·e, 0) over its photons' lit-side normals, times L·A (A: its surface, in voxel faces).
     // Seen along axis a through its opacity α_a, that is L·(A·mean max(n·e, 0)/α_a): the share
     // below, 1 on the lit side of a flat surface (A·|n_a| = α_a) and at most 0 on its dark side
-    // (darkSideSigned), but for a curtain's folds or a column's curve it follows the lit parts: a fold lit from above is
-    // brighter seen from above than its mean radiance, and darker from below, where a single mean
-    // normal gave every direction in front of it the mean. Emission leaves every way.
+    // (darkSideSigned), but for a curtain's folds or a column's curve it follows the lit parts: a
+    // fold lit from above is brighter seen from above than its mean radiance, and darker from
+    // below, where a single mean normal gave every direction in front of it the mean. Emission
+    // leaves every way (an emitter that is also lit at an angle to the axes shows its dark side
+    // the emission less the lit side's cancelled share: the cones add both shares in one sum).
     float reflectedShare = dot(radiance, vec3(1.0)) / max(dot(radiance + emitted, vec3(1.0)), 1e-30);
     vec3 opacity = min(unpackUnorm4x8(cellOpacity[cell]).xyz, vec3(MAX_OPACITY));
     // Flux-weighted means of max(n·e, 0) over the photons' lit-side normals, towards +a and −a.
