@@ -25,9 +25,14 @@ uniform float uSampleFootprint; // 1: the first sample; < 1: a later one's share
 // on another surface (a floor's contact line with a wall or a box) would put taps under that
 // surface, where the camera sees no floor and the map sees shadow: there, and where an axis has
 // no neighbour on the pixel's surface, the span is 0 and the filter keeps its texels.
+// "Far" is 8 pixel widths, or 3 times the neighbours' spacing on a surface seen at a grazing
+// angle, a pixel's width over the cosine (up to 16): a floor seen at 4° has its neighbouring rows
+// 14 pixel widths apart, and with them taken for a silhouette its pixels sampled the shadow map at
+// their centres, where a shadow line a quarter of a pixel wide blacked out a whole row of them.
 void sampleSpan(ivec2 pixel, vec3 p, vec3 n, out vec3 spanX, out vec3 spanY) {
     spanX = spanY = vec3(0.0);
     float facing = distance(p, uCameraEye) * uPixelWidth;
+    float reach = max(8.0 * facing, 3.0 * facing / max(abs(dot(normalize(uCameraEye - p), n)), 1.0 / 16.0));
     ivec2 last = imageSize(uDirect) - 1;
     vec3 span[2] = vec3[2](vec3(0.0), vec3(0.0));
     for (int y = -1; y <= 1; ++y)
@@ -36,7 +41,7 @@ void sampleSpan(ivec2 pixel, vec3 p, vec3 n, out vec3 spanX, out vec3 spanY) {
             vec4 q = texelFetch(uPosition, next, 0);
             vec3 offset = q.xyz - p;
             float d = length(offset);
-            if (q.w <= 0.0 || d >= 8.0 * facing || d == 0.0) continue;
+            if (q.w <= 0.0 || d >= reach || d == 0.0) continue;
             bool samePlane = dot(texelFetch(uNormal, next, 0).xyz, n) >= 0.9 && abs(dot(offset, n)) <= 0.25 * d;
             if (!samePlane) return;
             if (y == 0) span[0] = float(x) * offset;

@@ -231,6 +231,49 @@ TEST(DirectLighting, OneSampleOfAShadowEdgeShowsTheLitShareOfItsPixel) {
     EXPECT_LT(error, 0.1);
 }
 
+// A rod 2 cm thick half a metre above a floor, the sun straight down: its shadow is a line 2 cm
+// wide, seen from 0.4 m above the floor 5.3 m away (4.4°), where one row of pixels spans 0.38 m of
+// floor. Each pixel should show the lit share of its footprint, as the path tracer's pixel
+// average does (about 0.95 on the line's row). The neighbouring rows' points lie 13 pixel widths
+// apart there, and taken for a silhouette they left the pixels their filter of 3×3 texels: the
+// pixels whose centre fell on the line went black, a whole row of them.
+TEST(DirectLighting, AThinShadowOnAFloorSeenAtAGrazingAngleShowsTheLitShareOfItsPixels) {
+    const auto dir = test::testDir();
+    test::ObjWriter obj;
+    obj.material("white", glm::vec3(0.6f));
+    obj.floor(0.0f, 20.0f);
+    // Centred on the floor point that the centre of pixel row 57 sees, 2.25 m ahead of the eye's foot.
+    obj.box({-3.0f, 0.49f, -2.2592f}, {3.0f, 0.51f, -2.2392f});
+    const auto model = obj.write(dir);
+    const std::string view = " --scene " + model.string() +
+                             " --eye 0,0.4,3 --target 0,0.1,-10 --fov 30 --width 128 --height 96"
+                             " --sun-dir 0,-1,0 --sun-irradiance 3 ";
+    const auto engine = dir / "engine.pfm", truth = dir / "reference.pfm";
+    const auto r1 = test::runVct("render -q --gi off --aov direct" + view + "--hdr-out " + engine.string() +
+                                 " --out " + (dir / "engine.png").string());
+    ASSERT_EQ(r1.exitCode, 0) << r1.output;
+    const auto r2 = test::runVct("reference -q --bounces 0 --spp 256" + view + "--out " + truth.string());
+    ASSERT_EQ(r2.exitCode, 0) << r2.output;
+    const ImageF a = readHdrImage(engine), b = readHdrImage(truth);
+    const double lit = 0.6 / glm::pi<double>() * 3.0;
+    // The floor's pixels in the middle columns: the largest difference, and how many pixels the
+    // reference shows darkened by the line (that the line is there to be seen).
+    double largest = 0.0;
+    int lineRows = 0;
+    for (int y = 0; y < a.height; ++y)
+        for (int x = 40; x < 88; ++x) {
+            const double truthShare = b.at(x, y)[0] / lit;
+            if (truthShare < 0.5) continue;  // the sky, the far floor's edge
+            largest = std::max(largest, std::abs(a.at(x, y)[0] / lit - truthShare));
+            lineRows += truthShare < 0.98;
+        }
+    std::printf("[ shadow   ] thin line on a grazing floor, one sample: largest |engine - reference| %.3f of the lit "
+                "floor over the floor's pixels (%d of them darkened by the line in the reference)\n",
+                largest, lineRows);
+    EXPECT_GT(lineRows, 0);
+    EXPECT_LT(largest, 0.3);
+}
+
 // A curtain with smooth normals, seen at a grazing angle on its dark side: the sun and the floor
 // it lights are behind it, nothing is in front. Its vertex normals lean 60° from its plane's normal
 // (away from the camera), so from the camera they point away even though the face the camera
