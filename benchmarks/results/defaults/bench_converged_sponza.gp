@@ -2,23 +2,25 @@
 set terminal pngcairo size 2100,700 enhanced font 'DejaVu Sans,10'
 set output "bench_converged_sponza.png"
 $engine << EOD
-2095 0.0316691 0.00848497 "default"
-2099 0.031743 0.00882015 "near_detail=false"
+1808 0.0221022 0.00882788 "near_detail=false"
+1834 0.0219939 0.00849003 "default"
 EOD
 $pathtracer << EOD
-178.6 0.0538168 0.0398134 "4"
-714.3 0.0268714 0.0198207 "16"
-2871 0.0134964 0.00995815 "64"
-1.171e+04 0.00689922 0.00512111 "256"
+165.4 0.0538168 0.0398134 "4"
+667.1 0.0268714 0.0198207 "16"
+2587 0.0134964 0.00995815 "64"
+1.013e+04 0.00689922 0.00512111 "256"
 EOD
 $pareto << EOD
-2095 0.0316691 0.00848497 "default"
+1808 0.0221022 0.00882788 "near_detail=false"
+1834 0.0219939 0.00849003 "default"
 EOD
 $paretoIndirect << EOD
-2095 0.0316691 0.00848497 "default"
+1808 0.0221022 0.00882788 "near_detail=false"
+1834 0.0219939 0.00849003 "default"
 EOD
 $default << EOD
-2095 0.0316691 0.00848497 "default"
+1834 0.0219939 0.00849003 "default"
 EOD
 set xtics ("10" 10, "20" 20, "50" 50, "100" 100, "200" 200, "500" 500, "1000" 1000, "2000" 2000, "5000" 5000, "10000" 10000, "20000" 20000, "50000" 50000, "100000" 100000, "200000" 200000, "500000" 500000, "1e+06" 1e+06, "2e+06" 2e+06, "5e+06" 5e+06)
 noise = 0.00168586
@@ -54,8 +56,8 @@ unset logscale y
 set ytics auto
 set format y '%g'
 set xtics ("100" 100, "200" 200, "500" 500, "1000" 1000, "2000" 2000, "5000" 5000, "10000" 10000, "20000" 20000, "50000" 50000, "100000" 100000, "200000" 200000, "500000" 500000)
-set xrange [1611.78:3778.07]
-set yrange [0.0315421:0.03187]
+set xrange [1390.78:3301.21]
+set yrange [0.0219055:0.0221906]
 set key top left box opaque font ',9'
 set ylabel 'RMSE of the full image vs reference (linear)'
 set title 'vct points only (zoom; full image)'
