@@ -138,6 +138,22 @@ glm::ivec2 slabScenePixel(glm::dvec3 p, int width = 128, int height = 96) {
     const double y = glm::dot(v, up) / glm::dot(v, forward) * f;
     return glm::ivec2(int((x * 0.5 + 0.5) * width), int((0.5 - y * 0.5) * height));
 }
+
+// One sample of the engine's direct light (GI off; `engineOptions` its own settings) and the path
+// tracer's pixel average of it (bounces 0, 256 spp) for the same `view`.
+struct DirectPair {
+    ImageF engine, reference;
+};
+DirectPair directAgainstPixelAverage(const std::filesystem::path& dir, const std::string& view,
+                                     const std::string& engineOptions = "") {
+    const auto engine = dir / "engine.pfm", truth = dir / "reference.pfm";
+    const auto r1 = test::runVct("render -q --gi off --aov direct" + engineOptions + view + "--hdr-out " +
+                                 engine.string() + " --out " + (dir / "engine.png").string());
+    EXPECT_EQ(r1.exitCode, 0) << r1.output;
+    const auto r2 = test::runVct("reference -q --bounces 0 --spp 256" + view + "--out " + truth.string());
+    EXPECT_EQ(r2.exitCode, 0) << r2.output;
+    return {readHdrImage(engine), readHdrImage(truth)};
+}
 }  // namespace
 
 // A shadow edge is as sharp as the shadow map's texels or the pixel, whichever is wider: with the
@@ -202,13 +218,7 @@ TEST(DirectLighting, OneSampleOfAShadowEdgeShowsTheLitShareOfItsPixel) {
     const std::string view = " --scene " + model.string() +
                              " --eye 0,2.5,3.5 --target 0,0,0 --fov 50 --width 128 --height 96"
                              " --sun-dir 0,-1,0 --sun-irradiance 3 ";
-    const auto engine = dir / "engine.pfm", truth = dir / "reference.pfm";
-    const auto r1 = test::runVct("render -q --gi off --aov direct --light-view-res 64 --shadow-res 1024" + view +
-                                 "--hdr-out " + engine.string() + " --out " + (dir / "engine.png").string());
-    ASSERT_EQ(r1.exitCode, 0) << r1.output;
-    const auto r2 = test::runVct("reference -q --bounces 0 --spp 256" + view + "--out " + truth.string());
-    ASSERT_EQ(r2.exitCode, 0) << r2.output;
-    const ImageF a = readHdrImage(engine), b = readHdrImage(truth);
+    const auto [a, b] = directAgainstPixelAverage(dir, view, " --light-view-res 64 --shadow-res 1024");
     const double lit = 0.6 / glm::pi<double>() * 3.0;
     // The pixels whose footprint the edge crosses (the reference neither lit nor dark there), away
     // from the triangle's other edges, which the camera sees at the floor's contact.
@@ -248,13 +258,7 @@ TEST(DirectLighting, AThinShadowOnAFloorSeenAtAGrazingAngleShowsTheLitShareOfIts
     const std::string view = " --scene " + model.string() +
                              " --eye 0,0.4,3 --target 0,0.1,-10 --fov 30 --width 128 --height 96"
                              " --sun-dir 0,-1,0 --sun-irradiance 3 ";
-    const auto engine = dir / "engine.pfm", truth = dir / "reference.pfm";
-    const auto r1 = test::runVct("render -q --gi off --aov direct" + view + "--hdr-out " + engine.string() +
-                                 " --out " + (dir / "engine.png").string());
-    ASSERT_EQ(r1.exitCode, 0) << r1.output;
-    const auto r2 = test::runVct("reference -q --bounces 0 --spp 256" + view + "--out " + truth.string());
-    ASSERT_EQ(r2.exitCode, 0) << r2.output;
-    const ImageF a = readHdrImage(engine), b = readHdrImage(truth);
+    const auto [a, b] = directAgainstPixelAverage(dir, view);
     const double lit = 0.6 / glm::pi<double>() * 3.0;
     // The floor's pixels in the middle columns: the largest difference, and how many pixels the
     // reference shows darkened by the line (that the line is there to be seen).
