@@ -31,9 +31,10 @@ namespace {
 constexpr double kLeakMean = 0.005, kLeakLargestPixel = 0.02;  // of the lit floor's radiance
 constexpr double kSheetLargestPixel = 0.05;  // the pixels within a voxel of the sheet (frame.md, Known limits)
 // The rooms turned 45° to the grid, room B's end wall lit from outside by a low sun: measured 0.39 %
-// on average and 67 % at the worst pixel (0.69 % and 84 % before the exit shares were signed on a
-// slanted surface's dark side); benchmarks/turned_rooms.sh's other alignment of the grid 0.71 %.
-constexpr double kTurnedRoomLeakMean = 0.005, kTurnedRoomLeakLargestPixel = 0.75;
+// on average and 67 % at the worst pixel, a corner's (0.69 % and 84 % before the exit shares were
+// signed on a slanted surface's dark side); benchmarks/turned_rooms.sh's other alignment of the
+// grid 0.71 %. The mean is the guard; the worst pixel only has to stay below the lit floor.
+constexpr double kTurnedRoomLeakMean = 0.005, kTurnedRoomLeakLargestPixel = 0.9;
 constexpr double kUnderSheetMean = 0.015, kUnderSheetLargestPixel = 0.02;  // of π·Le
 // The default (4 narrow cones) on Cornell: issue 12's bounds (the cone set's cells reached 0.46..1.37).
 constexpr double kCornellMean[2] = {0.9, 1.1}, kCornellCells[2] = {0.75, 1.33};
