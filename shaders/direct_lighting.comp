@@ -27,12 +27,13 @@ uniform float uSampleFootprint; // 1: the first sample; < 1: a later one's share
 // no neighbour on the pixel's surface, the span is 0 and the filter keeps its texels.
 // "Far" is 8 pixel widths, or 3 times the neighbours' spacing on a surface seen at a grazing
 // angle, a pixel's width over the cosine (up to 16): a floor seen at 4° has its neighbouring rows
-// 14 pixel widths apart, and with them taken for a silhouette its pixels sampled the shadow map at
+// 13 pixel widths apart, and with them taken for a silhouette its pixels sampled the shadow map at
 // their centres, where a shadow line a quarter of a pixel wide blacked out a whole row of them.
 void sampleSpan(ivec2 pixel, vec3 p, vec3 n, out vec3 spanX, out vec3 spanY) {
     spanX = spanY = vec3(0.0);
-    float facing = distance(p, uCameraEye) * uPixelWidth;
-    float reach = max(8.0 * facing, 3.0 * facing / max(abs(dot(normalize(uCameraEye - p), n)), 1.0 / 16.0));
+    vec3 toEye = uCameraEye - p;
+    float eyeDistance = length(toEye), facing = eyeDistance * uPixelWidth;
+    float reach = max(8.0 * facing, 3.0 * facing / max(abs(dot(toEye, n)) / eyeDistance, 1.0 / 16.0));
     ivec2 last = imageSize(uDirect) - 1;
     vec3 span[2] = vec3[2](vec3(0.0), vec3(0.0));
     for (int y = -1; y <= 1; ++y)

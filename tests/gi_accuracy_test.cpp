@@ -379,12 +379,12 @@ TEST(GiAccuracy, ASheetAtAnAngleToTheGridShowsItsLightOnItsLitSideOnly) {
     const std::string scene = "--scene " + model.write(dir, "sheet").string() +
                               " --sun-dir -0.6718,-0.3,0.6718 --sun-irradiance 10 --target 0,1,0 --fov 60 --width 64 "
                               "--height 48 --view radiance";
-    const auto meanOf = [&](const std::string& name, glm::vec3 eye) {
+    const auto seenFrom = [&](const std::string& name, glm::vec3 eye) {
         return greyStats(render(dir, name, scene + vectorOption("--eye", glm::dvec3(eye))), 0, 64, 0, 48);
     };
-    const GreyStats lit = meanOf("lit", centre + 2.0f * litSide);
-    const GreyStats darkLeft = meanOf("dark_left", centre - 0.5f * litSide - 2.0f * along);
-    const GreyStats darkRight = meanOf("dark_right", centre - 0.5f * litSide + 2.0f * along);
+    const GreyStats lit = seenFrom("lit", centre + 2.0f * litSide);
+    const GreyStats darkLeft = seenFrom("dark_left", centre - 0.5f * litSide - 2.0f * along);
+    const GreyStats darkRight = seenFrom("dark_right", centre - 0.5f * litSide + 2.0f * along);
     std::printf("[ leak     ] sheet at 45° to the grid: voxels' light seen from its lit side %.3f, from its dark side "
                 "%.5f and %.5f (largest pixel %.5f)\n",
                 lit.mean, darkLeft.mean, darkRight.mean, std::max(darkLeft.largest, darkRight.largest));
