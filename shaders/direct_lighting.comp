@@ -19,9 +19,9 @@ uniform float uSampleFootprint; // 1: the first sample; < 1: a later one's share
 
 // The span of the pixel sample on its surface, as two vectors in the tangent plane from the
 // neighbouring pixels' points (the pixel's footprint is the parallelogram ±½ of each): the first
-// sample, alone in a plain frame, integrates its whole pixel; a later, jittered one a share of the
-// shorter axis, isotropically, as its texture lookups do (material.glsl): the jitter integrates
-// the rest. A neighbour far away or sky (a silhouette) is no part of the footprint; one close by
+// sample, alone in a plain frame, integrates its whole pixel; a later, jittered one the same
+// parallelogram shrunk to its share, as its texture lookups do (material.glsl): the jitter
+// integrates the rest. A neighbour far away or sky (a silhouette) is no part of the footprint; one close by
 // on another surface (a floor's contact line with a wall or a box) would put taps under that
 // surface, where the camera sees no floor and the map sees shadow: there, and where an axis has
 // no neighbour on the pixel's surface, the span is 0 and the filter keeps its texels.
@@ -49,13 +49,8 @@ void sampleSpan(ivec2 pixel, vec3 p, vec3 n, out vec3 spanX, out vec3 spanY) {
             if (x == 0) span[1] = float(y) * offset;
         }
     if (span[0] == vec3(0.0) || span[1] == vec3(0.0)) return;
-    if (uSampleFootprint < 1.0) {
-        float shorter = min(length(span[0]), length(span[1])) * uSampleFootprint;
-        span[0] = normalize(span[0]) * shorter;
-        span[1] = normalize(span[1]) * shorter;
-    }
-    spanX = span[0];
-    spanY = span[1];
+    spanX = span[0] * uSampleFootprint;
+    spanY = span[1] * uSampleFootprint;
 }
 
 void main() {

@@ -8,33 +8,24 @@ uniform int uHasTexture;
 uniform int uMaterialIndex; // into the materials buffer (GpuScene)
 uniform int uVertexColors;  // 0: every vertex of the draw is white; the interpolated colour is
                             // then not used (interpolating 1 is not always exactly 1)
-uniform float uTextureLodBias;  // < 0 for the later of several pixel samples (render/pixel_samples.hpp)
+uniform float uSampleFootprint;  // G-buffer: the share of the pixel its lookups filter over (render/pixel_samples.hpp)
 
 vec3 materialVertexColor(vec3 interpolated) { return uVertexColors != 0 ? interpolated : vec3(1.0); }
 
-// The mip-level bias of a lookup at `uv`. The later of several pixel samples filter isotropically,
-// and an isotropic filter takes its level from the footprint's longer axis: on a floor seen at a
-// grazing angle that blurs across the view what the jitter is meant to integrate. Their bias
-// (uTextureLodBias) is therefore measured from the shorter axis.
-float textureLodBias(vec2 uv) {
-    if (uTextureLodBias >= 0.0) return 0.0;
-    vec2 size = vec2(textureSize(uBaseColorTexture, 0));
-    float alongX = length(dFdx(uv) * size), alongY = length(dFdy(uv) * size);
-    return uTextureLodBias + log2(max(min(alongX, alongY), 1e-6) / max(max(alongX, alongY), 1e-6));
-}
-
 // The base-colour texture averaged over the pixel's footprint in it, an ellipse whose axes the
-// screen derivatives of `uv` give: up to FOOTPRINT_PROBES mipmapped lookups spread along its
-// longer axis, each filtering a stretch as long as the shorter axis is wide (a floor seen at a
-// grazing angle covers a long thin strip of its texture per pixel; one lookup would blur it to
-// the strip's length across as well). The texture's sampler must filter isotropically. This is
-// the anisotropic filter of a GPU made explicit: against the path tracer, which averages each
-// pixel's area, it came closer than llvmpipe's own anisotropic filtering on every Sponza preset,
-// in less time, and it gives the same image on every driver.
+// screen derivatives of `uv` give, shrunk by `share` (a later pixel sample's, keeping its shape):
+// up to FOOTPRINT_PROBES mipmapped lookups spread along its longer axis, each filtering a stretch
+// as long as the shorter axis is wide (a floor seen at a grazing angle covers a long thin strip of
+// its texture per pixel; one lookup would blur it to the strip's length across as well). The
+// texture's sampler must filter isotropically. This is the anisotropic filter of a GPU made
+// explicit: against the path tracer, which averages each pixel's area, it came closer than
+// llvmpipe's own anisotropic filtering on every Sponza preset, in less time, and it gives the same
+// image on every driver (whose anisotropic filters spread their probes over the whole footprint
+// whatever the mip-level bias, so that jittered samples could not shrink them).
 const int FOOTPRINT_PROBES = 8;
-vec4 footprintTexel(vec2 uv) {
+vec4 footprintTexel(vec2 uv, float share) {
     vec2 size = vec2(textureSize(uBaseColorTexture, 0));
-    vec2 alongX = dFdx(uv), alongY = dFdy(uv);
+    vec2 alongX = dFdx(uv) * share, alongY = dFdy(uv) * share;
     float lengthX = length(alongX * size), lengthY = length(alongY * size);
     vec2 major = lengthX >= lengthY ? alongX : alongY;
     float majorLength = max(lengthX, lengthY), minorLength = min(lengthX, lengthY);
@@ -61,14 +52,14 @@ vec4 materialColorWith(vec4 texel, vec3 vertexColor) {
 // Linear albedo and alpha at `uv` (the texture's coordinates, material_vertex.glsl), the texture
 // filtered by its sampler (light-view maps: anisotropic).
 vec4 materialBaseColor(vec2 uv, vec3 vertexColor) {
-    return materialColorWith(uHasTexture != 0 ? texture(uBaseColorTexture, uv, textureLodBias(uv)) : vec4(1.0), vertexColor);
+    return materialColorWith(uHasTexture != 0 ? texture(uBaseColorTexture, uv) : vec4(1.0), vertexColor);
 }
 
-// The same over the pixel's footprint (footprintTexel), for the G-buffer's first pixel sample; the
-// later ones filter less (textureLodBias) and leave the pixel's area to the jitter.
+// The same over the G-buffer sample's share of the pixel's footprint (footprintTexel): the whole
+// pixel for a plain frame; later pixel samples filter less and leave the rest to the jitter.
 vec4 materialBaseColorOverPixel(vec2 uv, vec3 vertexColor) {
-    if (uHasTexture == 0 || uTextureLodBias < 0.0) return materialBaseColor(uv, vertexColor);
-    return materialColorWith(footprintTexel(uv), vertexColor);
+    if (uHasTexture == 0) return materialBaseColor(uv, vertexColor);
+    return materialColorWith(footprintTexel(uv, uSampleFootprint), vertexColor);
 }
 
 // The triangle's unit geometric normal turned to face `towards` (all surfaces are two-sided):

@@ -123,30 +123,37 @@ TEST(PixelSamples, SixteenSamplesBringTheDirectLightToTheReferences) {
     EXPECT_NEAR(ratio[1], 1.0, 0.01);
 }
 
-TEST(PixelSamples, SixteenSamplesOfAGrazingTiledFloorConvergeToItsArea) {
+TEST(PixelSamples, JitteredSamplesOfAGrazingTiledFloorConvergeToItsArea) {
     // The tiled quad seen at a grazing angle, its texture repeated 8 times: far away its joints are
     // much thinner than a pixel across the view and the texture is squeezed along it. The
     // reference integrates every pixel's area with level-0 lookups; under the quad's sun
     // (tests/gltf_quad.hpp) its direct radiance is the albedo. Jittered samples whose lookups are
     // still filtered over the whole pixel (mipmapped at the pixel's footprint, or anisotropic)
-    // converge to a texture blurred by that filter instead.
+    // converge to a texture blurred by that filter instead. Samples that filter over a disc as wide
+    // as the footprint's shorter axis alias along the view: averaged, 2 or 4 of them came out
+    // further from the pixel's area than one (0.076 and 0.059 against 0.037 here; 16: 0.025).
     const auto dir = test::testDir();
     const std::string view = grazingTiledQuadView(dir, "tiles", {{0, 8}, {8, 8}, {8, 0}, {0, 0}});
     const ImageF truth = referenceDirect(dir, view, 1024);
     ASSERT_FALSE(truth.rgba.empty());
-    double error[2] = {0, 0};
-    const int samples[2] = {1, 16};
-    for (int i = 0; i < 2; ++i) {
+    const int samples[4] = {1, 2, 4, 16};
+    double error[4] = {0, 0, 0, 0};
+    for (int i = 0; i < 4; ++i) {
         const ImageF albedo = renderSamples(dir, view + " --voxel-levels 5 --gi off", "albedo", samples[i]);
         ASSERT_FALSE(albedo.rgba.empty());
         error[i] = metrics::rmse(albedo, truth);
     }
-    std::printf("[ samples  ] grazing tiled floor, albedo against the reference: RMSE %.4f with 1 sample, %.4f with 16\n",
-                error[0], error[1]);
-    // One sample filters over its pixel's footprint (0.037 here); sixteen that each did stay nearly
-    // as blurred (0.034), where sixteen filtering less come to about two thirds of the one.
-    EXPECT_LT(error[1], 0.75 * error[0]);
-    EXPECT_LT(error[1], 0.03);
+    std::printf("[ samples  ] grazing tiled floor, albedo against the reference: RMSE %.4f with 1 sample, %.4f with 2, "
+                "%.4f with 4, %.4f with 16\n",
+                error[0], error[1], error[2], error[3]);
+    // One sample's filter over its whole pixel is close to the area here; the first few jittered
+    // samples, each over a share of it, cannot beat it yet (0.047 and 0.043) but must not stray far
+    // from it, and every further one comes closer.
+    EXPECT_LT(error[1], 1.4 * error[0]);
+    EXPECT_LT(error[2], 1.3 * error[0]);
+    EXPECT_LT(error[2], error[1]);
+    EXPECT_LT(error[3], 0.6 * error[0]);
+    EXPECT_LT(error[3], 0.025);
 }
 
 TEST(PixelSamples, TextureCoordinatesNearFloatsLimitGiveAFiniteImage) {

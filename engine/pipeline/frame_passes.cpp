@@ -239,7 +239,7 @@ const PassTable kFramePasses = {{
      {I::Geometry, I::Materials, I::Camera, I::OutputSize}, {}, {R::GBuffer}, unlessLitView,
      "scene.vert, gbuffer.frag",
      [](FrameResources& f, const FrameView& v) {
-         f.gbuffer->render(*f.gpuScene, v.transform, textureLodBias(v.sample));
+         f.gbuffer->render(*f.gpuScene, v.transform, pixelSampleFootprint(v.sample));
      }},
     {Pass::DirectLighting, "direct_lighting", Stage::Camera,
      {I::Lights, I::ShadowSettings}, {R::GBuffer, R::LightViewMaps}, {R::DirectRadiance}, unlessLitView,

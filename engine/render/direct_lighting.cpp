@@ -18,7 +18,7 @@ void DirectLighting::render(const GBuffer& gbuffer, const Scene& scene, const st
                             const LightViewSets& lightViews, int pcfRadius, const ViewTransform& camera,
                             int sample) {
     // A pixel's width at distance 1 (projection[1][1] = 1 / tan(fovY / 2)); a later, jittered
-    // sample's share of the pixel is the one its texture lookups take (textureLodBias).
+    // sample's share of the pixel is the one its texture lookups take (pixelSampleFootprint).
     const float pixelWidth = 2.0f / (camera.projection[1][1] * float(camera.height));
     gl::ComputeCall call(program_);
     call.texture(gl::TEXTURE_GBUFFER_ALBEDO, gbuffer.albedo())
@@ -28,7 +28,7 @@ void DirectLighting::render(const GBuffer& gbuffer, const Scene& scene, const st
         .uniform("uPcfRadius", pcfRadius)
         .uniform("uCameraEye", camera.eye)
         .uniform("uPixelWidth", pixelWidth)
-        .uniform("uSampleFootprint", std::exp2(textureLodBias(sample)));
+        .uniform("uSampleFootprint", pixelSampleFootprint(sample));
     if (lights.empty()) {
         const float zero[4] = {0, 0, 0, 0};
         glClearTexImage(radiance_.id(), 0, GL_RGBA, GL_FLOAT, zero);

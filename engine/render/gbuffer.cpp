@@ -38,7 +38,7 @@ GBuffer::GBuffer(int width, int height)
 
 std::size_t GBuffer::bytes() const { return std::size_t(width_) * height_ * (8 + 8 + 16 + 16 + 8 + 4); }
 
-void GBuffer::render(const GpuScene& scene, const ViewTransform& camera, float textureLodBias) {
+void GBuffer::render(const GpuScene& scene, const ViewTransform& camera, float sampleFootprint) {
     gl::beginRasterPass({framebuffer_.id(), width_, height_, true});
     const float zero[4] = {0, 0, 0, 0};
     for (GLint i = 0; i < kColorTargetCount; ++i) glClearNamedFramebufferfv(framebuffer_.id(), GL_COLOR, i, zero);
@@ -46,9 +46,9 @@ void GBuffer::render(const GpuScene& scene, const ViewTransform& camera, float t
     glUseProgram(program_.id());
     gl::setUniform(program_.id(), "uViewProjection", camera.viewProjection);
     gl::setUniform(program_.id(), "uEye", camera.eye);
-    gl::setUniform(program_.id(), "uTextureLodBias", textureLodBias);
-    // Isotropic samplers: the first sample filters over the pixel's footprint itself
-    // (shaders/material.glsl, footprintTexel), the later ones filter less.
+    gl::setUniform(program_.id(), "uSampleFootprint", sampleFootprint);
+    // Isotropic samplers: every sample filters over its share of the pixel's footprint itself
+    // (shaders/material.glsl, footprintTexel).
     scene.draw(program_.id(), GpuScene::Materials::All, GpuScene::Filtering::Isotropic);
     gl::endRasterPass();
 }

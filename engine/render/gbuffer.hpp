@@ -10,9 +10,9 @@ namespace vct {
 class GBuffer {
 public:
     GBuffer(int width, int height);
-    // `textureLodBias` < 0 (render/pixel_samples.hpp): the isotropic, sharper texture lookups of
-    // later pixel samples.
-    void render(const GpuScene& scene, const ViewTransform& camera, float textureLodBias = 0.0f);
+    // `sampleFootprint` (render/pixel_samples.hpp): the share of the pixel's footprint that the
+    // texture lookups filter over, 1 for a plain frame, less for later pixel samples.
+    void render(const GpuScene& scene, const ViewTransform& camera, float sampleFootprint = 1.0f);
 
     GLuint albedo() const { return albedo_.id(); }      // RGBA16F linear albedo
     GLuint normal() const { return normal_.id(); }      // RGBA16F unit normal facing the camera

@@ -26,19 +26,18 @@ inline glm::dvec2 pixelSampleOffset(int sample) {
     return {radicalInverse(unsigned(sample), 2) - 0.5, radicalInverse(unsigned(sample), 3) - 0.5};
 }
 
-// How sample k looks up the scene's textures. The first, alone in a plain frame, filters them over
-// its pixel's footprint (shaders/material.glsl, footprintTexel). A filter one pixel wide, though,
-// averaged over N lookups at jittered points blurs textures over about two pixels, while the
-// pixel's own area (what the reference integrates, with level-0 lookups) is one. The later samples therefore filter less and
-// leave the integration over the pixel to the jitter: a footprint of 1/√(k+1) of the pixel's
-// shorter axis (a mip-level bias of −½·log2(k + 1), down to −3, which keeps the aliasing of
-// single samples bounded; shaders/material.glsl measures it from the shorter axis), isotropic,
-// because an anisotropic filter spreads its probes along the pixel's whole footprint whatever the
-// bias (with it, Sponza's floor converged to a texture blurred along the view:
-// docs/benchmark.md). Returns sample k's bias; < 0 tells the G-buffer to take one lookup at that
-// bias instead of the footprint filter.
-inline float textureLodBias(int sample) {
-    return sample <= 0 ? 0.0f : std::max(-3.0f, -0.5f * std::log2(float(sample + 1)));
+// The share of its pixel that sample k filters over, along each axis of the pixel's footprint on
+// its surface: its texture lookups (shaders/material.glsl, footprintTexel) and its shadow lookups
+// (shaders/direct_lighting.comp) average that much of the footprint. The first, alone in a plain
+// frame, filters over its whole pixel. A filter one pixel wide, though, averaged over N lookups at
+// jittered points blurs over about two pixels, while the pixel's own area (what the reference
+// integrates, with level-0 lookups) is one. The later samples therefore filter over 1/√(k+1) of
+// the footprint (down to 1/8, which keeps the aliasing of single samples bounded) and leave the
+// rest of the pixel to the jitter. The footprint keeps its shape: shrunk to a disc as wide as its
+// shorter axis, a floor seen at a grazing angle aliased along the view in every later sample,
+// and 2 or 4 samples came out further from the pixel's area than one (docs/benchmark.md).
+inline float pixelSampleFootprint(int sample) {
+    return sample <= 0 ? 1.0f : std::max(0.125f, 1.0f / std::sqrt(float(sample + 1)));
 }
 
 }  // namespace vct
