@@ -2,7 +2,8 @@
 // Final image: direct (shadowed) + emissive (+ indirect, with the GI pipeline), written as linear
 // HDR and as a tone-mapped 8-bit sRGB image. With an AOV selected, that buffer is written instead
 // (raw values in HDR, a visualisation in 8 bits). Frames jittered inside the pixel are averaged
-// here, in linear HDR, and the 8-bit image shows the average.
+// here, in linear HDR, and the 8-bit image shows the average: their indirect light weighted by the
+// cones each traced (uIndirectWeight), the rest alike.
 #include "math.glsl"
 #include "tonemap.glsl"
 
@@ -18,6 +19,7 @@ layout(binding = TEXTURE_INDIRECT) uniform sampler2D uIndirect;    // indirect i
 layout(rgba32f, binding = IMAGE_HDR) uniform writeonly image2D uHdr;
 layout(rgba8, binding = IMAGE_LDR) uniform writeonly image2D uLdr;
 layout(rgba32f, binding = IMAGE_HDR_SUM) uniform image2D uHdrSum;  // Σ of the samples averaged so far
+layout(rgba32f, binding = IMAGE_INDIRECT_SUM) uniform image2D uIndirectSum;  // Σ weight × indirect light, Σ weight
 
 const int AOV_FINAL = 0;
 const int AOV_DIRECT = 1;
@@ -38,6 +40,7 @@ uniform int uShowDebugImage;  // 0: no, 1: as it is (albedo), 2: tone-mapped (ra
 uniform int uHasIndirect;
 uniform float uGiScale;  // 1 in every accuracy measurement (DESIGN 5.3)
 uniform int uSamplesInAverage;  // 1: this frame starts the average; n > 1: its n-th sample
+uniform float uIndirectWeight;  // > 0: this sample's weight in the average of the indirect light
 
 // Lambertian: outgoing radiance = ρ/π × irradiance, added with weight exactly uGiScale.
 vec3 indirectRadiance(ivec2 pixel) {
@@ -45,8 +48,9 @@ vec3 indirectRadiance(ivec2 pixel) {
 }
 
 // The frame's own value at `pixel`: linear HDR (radiance, or the AOV's raw value) and coverage
-// (0 = sky). Accumulated frames average these, then display the average.
-vec4 pixelValue(ivec2 pixel) {
+// (0 = sky), less the cones' part, `indirect`, which accumulated frames average with other weights.
+vec4 pixelValue(ivec2 pixel, out vec3 indirect) {
+    indirect = vec3(0.0);
     if (uShowDebugImage != 0) return vec4(texelFetch(uDebugImage, pixel, 0).rgb, 1.0);
     vec4 position = texelFetch(uPosition, pixel, 0);
     bool sky = position.w <= 0.0;
@@ -58,18 +62,20 @@ vec4 pixelValue(ivec2 pixel) {
     } else if (uAov == AOV_DEPTH) {
         hdr = vec3(sky ? 0.0 : dot(position.xyz - uEye, uForward));
     } else if (uAov == AOV_INDIRECT) {
-        hdr = (sky || uHasIndirect == 0) ? vec3(0.0) : texelFetch(uIndirect, pixel, 0).rgb;  // irradiance, W/m²
+        hdr = vec3(0.0);
+        if (!sky && uHasIndirect != 0) indirect = texelFetch(uIndirect, pixel, 0).rgb;  // irradiance, W/m²
     } else if (uAov == AOV_AO) {
         hdr = vec3(sky || uHasIndirect == 0 ? 1.0 : texelFetch(uIndirect, pixel, 0).a);
     } else if (uAov == AOV_GI) {
         // The indirect light the final image adds: what the reference's --indirect-out holds.
-        hdr = (sky || uHasIndirect == 0) ? vec3(0.0) : indirectRadiance(pixel);
+        hdr = vec3(0.0);
+        if (!sky && uHasIndirect != 0) indirect = indirectRadiance(pixel);
     } else {
         hdr = texelFetch(uDirect, pixel, 0).rgb;
         // The direct AOV is what the reference's --direct-out holds: emission of the surface seen
         // plus light arriving straight from the lights.
         if (!sky) hdr += texelFetch(uEmissive, pixel, 0).rgb;
-        if (uAov == AOV_FINAL && !sky && uHasIndirect != 0) hdr += indirectRadiance(pixel);
+        if (uAov == AOV_FINAL && !sky && uHasIndirect != 0) indirect = indirectRadiance(pixel);
     }
     return vec4(hdr, sky ? 0.0 : 1.0);
 }
@@ -89,17 +95,21 @@ vec3 displayed(vec3 hdr, bool sky) {
 void main() {
     ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
     if (any(greaterThanEqual(pixel, imageSize(uHdr)))) return;
-    vec4 value = pixelValue(pixel);
+    vec3 indirect;
+    vec4 value = pixelValue(pixel, indirect);
     // Samples of one pixel add up in float in a fixed order (one invocation per pixel), so an
     // accumulated image is as deterministic as a single frame; the first sample is stored as it is.
-    vec4 average = value;
+    vec4 average = value + vec4(indirect, 0.0);
+    vec4 indirectSum = vec4(indirect * uIndirectWeight, uIndirectWeight);
     if (uSamplesInAverage > 1) {
         vec4 sum = imageLoad(uHdrSum, pixel) + value;
         imageStore(uHdrSum, pixel, sum);
-        average = sum / float(uSamplesInAverage);
+        indirectSum += imageLoad(uIndirectSum, pixel);
+        average = sum / float(uSamplesInAverage) + vec4(indirectSum.rgb / indirectSum.a, 0.0);
     } else {
         imageStore(uHdrSum, pixel, value);
     }
+    imageStore(uIndirectSum, pixel, indirectSum);
     imageStore(uHdr, pixel, average);
     imageStore(uLdr, pixel, vec4(displayed(average.rgb, average.a <= 0.0), 1.0));
 }

@@ -4,6 +4,7 @@
 
 #include "gl/context.hpp"
 #include "pipeline/renderer.hpp"
+#include "render/cone_trace.hpp"
 #include "scene/scene_loader.hpp"
 #include "test_util.hpp"
 
@@ -182,7 +183,6 @@ TEST_F(PassGraphTest, PixelSamplesRerunOnlyTheCameraPassesAndAverage) {
     Renderer renderer(scene_, smallSettings());
     const Camera camera = scene_.cameras[0];
     renderer.renderFrame(camera, 0);
-    const ImageF centre = renderer.readHdr();
     EXPECT_EQ(renderer.samplesInOutput(), 1);
     renderer.renderFrame(camera, 1);
     EXPECT_EQ(ran(renderer), (Names{Pass::GBuffer, Pass::DirectLighting, Pass::ConeTrace, Pass::Composite}))
@@ -193,19 +193,52 @@ TEST_F(PassGraphTest, PixelSamplesRerunOnlyTheCameraPassesAndAverage) {
     EXPECT_EQ(ran(renderer), Names{}) << "the same sample again: nothing to do";
     EXPECT_EQ(renderer.samplesInOutput(), 2);
 
-    // The output is the mean of the samples: sample 1 alone (a fresh average) and the centre.
-    Renderer single(scene_, smallSettings());
-    single.renderFrame(camera, 1);
-    EXPECT_EQ(single.samplesInOutput(), 1);
-    const ImageF jittered = single.readHdr();
-    double largest = 0.0, differs = 0.0;
-    for (std::size_t i = 0; i < averaged.rgba.size(); ++i) {
-        const double mean = 0.5 * (double(centre.rgba[i]) + double(jittered.rgba[i]));
-        largest = std::max(largest, std::abs(double(averaged.rgba[i]) - mean));
-        differs = std::max(differs, std::abs(double(centre.rgba[i]) - double(jittered.rgba[i])));
+    // The output is the mean of the samples: sample 1 alone (a fresh average) and the centre. Their
+    // direct light counts alike, their indirect light by the narrow cones each traced (four at the
+    // centre, one after it); seen AOV by AOV, each is that mean.
+    const ConeSettings cones = renderer.settings().cones;
+    const double centreWeight = indirectWeightOfSample(cones, 0), laterWeight = indirectWeightOfSample(cones, 1);
+    EXPECT_EQ(centreWeight, double(cones.rays));
+    EXPECT_EQ(laterWeight, 1.0);
+    for (Aov aov : {Aov::Direct, Aov::Gi}) {
+        RenderSettings s = smallSettings();
+        s.display.aov = aov;
+        Renderer both(scene_, s), single(scene_, s);
+        both.renderFrame(camera, 0);
+        const ImageF centreAov = both.readHdr();
+        both.renderFrame(camera, 1);
+        const ImageF averaged = both.readHdr();
+        single.renderFrame(camera, 1);
+        EXPECT_EQ(single.samplesInOutput(), 1);
+        const ImageF jittered = single.readHdr();
+        const double w = aov == Aov::Gi ? centreWeight / (centreWeight + laterWeight) : 0.5;
+        double largest = 0.0, differs = 0.0;
+        for (std::size_t i = 0; i < averaged.rgba.size(); ++i) {
+            const double mean = w * double(centreAov.rgba[i]) + (1.0 - w) * double(jittered.rgba[i]);
+            largest = std::max(largest, std::abs(double(averaged.rgba[i]) - mean));
+            differs = std::max(differs, std::abs(double(centreAov.rgba[i]) - double(jittered.rgba[i])));
+        }
+        EXPECT_LE(largest, 1e-6) << aovName(aov);
+        EXPECT_GT(differs, 1e-3) << aovName(aov) << ": sample 1 must look at another point of the pixel than sample 0";
     }
-    EXPECT_LE(largest, 1e-6);
-    EXPECT_GT(differs, 1e-3) << "sample 1 must look at another point of the pixel than sample 0";
+    // The final image adds the two.
+    {
+        RenderSettings s = smallSettings();
+        s.display.aov = Aov::Direct;
+        Renderer direct(scene_, s);
+        s.display.aov = Aov::Gi;
+        Renderer gi(scene_, s);
+        for (int sample : {0, 1}) {
+            direct.renderFrame(camera, sample);
+            gi.renderFrame(camera, sample);
+        }
+        const ImageF d = direct.readHdr(), g = gi.readHdr();
+        double largest = 0.0;
+        for (std::size_t i = 0; i < averaged.rgba.size(); ++i)
+            if (i % 4 != 3)
+                largest = std::max(largest, std::abs(double(averaged.rgba[i]) - double(d.rgba[i]) - double(g.rgba[i])));
+        EXPECT_LE(largest, 1e-6) << "final = direct + indirect, each averaged";
+    }
 
     // Any other change starts a new average; so does a camera move.
     RenderSettings s = renderer.settings();

@@ -71,6 +71,7 @@
     X(IMAGE_HDR, 0)                                                                               \
     X(IMAGE_LDR, 1)                                                                               \
     X(IMAGE_HDR_SUM, 2)              /* composite: the sum of the samples averaged so far */      \
+    X(IMAGE_INDIRECT_SUM, 3)         /* composite: the weighted sum of their indirect light */    \
     /* Texture units (samplers). */                                                               \
     X(TEXTURE_BASE_COLOR, 0)         /* material.glsl, in every pass that rasterizes the scene */ \
     X(TEXTURE_GBUFFER_ALBEDO, 0)                                                                  \

@@ -167,13 +167,13 @@ void composite(FrameResources& f, const FrameView& v) {
     if (f.settings.view != ViewMode::Lit) {
         const GLuint debugImage = f.settings.view == ViewMode::Cones ? f.coneView->image() : f.voxelView->image();
         f.composite->render(*f.gbuffer, f.direct->radiance(), 0, v.transform, 1.0f, f.settings.display,
-                            v.samplesInAverage, debugImage, f.settings.view != ViewMode::Voxels);
+                            v.samplesInAverage, 1.0f, debugImage, f.settings.view != ViewMode::Voxels);
         return;
     }
     const GLuint indirect = f.settings.gi && f.coneTrace ? f.coneTrace->indirect() : 0;
     const float depthScale = float(glm::length(f.scene->worldBounds.size()));
     f.composite->render(*f.gbuffer, f.direct->radiance(), indirect, v.transform, depthScale, f.settings.display,
-                        v.samplesInAverage);
+                        v.samplesInAverage, indirectWeightOfSample(frameCones(f.settings), v.sample));
 }
 
 using I = Input;

@@ -39,12 +39,13 @@ Composite::Composite(int width, int height)
       height_(height),
       hdr_(gl::createTexture2D(GL_RGBA32F, width, height, 1, "composite hdr")),
       hdrSum_(gl::createTexture2D(GL_RGBA32F, width, height, 1, "composite hdr sum")),
+      indirectSum_(gl::createTexture2D(GL_RGBA32F, width, height, 1, "composite indirect sum")),
       ldr_(gl::createTexture2D(GL_RGBA8, width, height, 1, "composite ldr")),
       program_(gl::buildProgram({{GL_COMPUTE_SHADER, "composite.comp"}})) {}
 
 void Composite::render(const GBuffer& gbuffer, GLuint directRadiance, GLuint indirect, const ViewTransform& camera,
-                       float depthScale, const DisplaySettings& display, int samplesInAverage, GLuint debugImage,
-                       bool toneMapDebugImage) {
+                       float depthScale, const DisplaySettings& display, int samplesInAverage,
+                       float indirectWeight, GLuint debugImage, bool toneMapDebugImage) {
     gl::ComputeCall(program_)
         .texture(gl::TEXTURE_GBUFFER_ALBEDO, gbuffer.albedo())
         .texture(gl::TEXTURE_GBUFFER_NORMAL, gbuffer.normal())
@@ -56,7 +57,9 @@ void Composite::render(const GBuffer& gbuffer, GLuint directRadiance, GLuint ind
         .image(gl::IMAGE_HDR, hdr_.id(), GL_WRITE_ONLY, GL_RGBA32F)
         .image(gl::IMAGE_LDR, ldr_.id(), GL_WRITE_ONLY, GL_RGBA8)
         .image(gl::IMAGE_HDR_SUM, hdrSum_.id(), GL_READ_WRITE, GL_RGBA32F)
+        .image(gl::IMAGE_INDIRECT_SUM, indirectSum_.id(), GL_READ_WRITE, GL_RGBA32F)
         .uniform("uSamplesInAverage", samplesInAverage)
+        .uniform("uIndirectWeight", indirectWeight)
         .uniform("uHasIndirect", indirect != 0 ? 1 : 0)
         .uniform("uGiScale", display.giScale)
         .uniform("uShowDebugImage", debugImage == 0 ? 0 : (toneMapDebugImage ? 2 : 1))

@@ -35,19 +35,20 @@ public:
     // `indirect` (0 = GI off): irradiance and visibility from cone tracing.
     // `debugImage` (0 = none): a debug view's colour, shown instead of the lit image.
     // `samplesInAverage`: 1 starts a new average with this frame; n > 1 adds it as the n-th sample
-    // (a frame jittered inside the pixel) to the average the output holds.
+    // (a frame jittered inside the pixel) to the average the output holds, its indirect light
+    // with weight `indirectWeight` (render/cone_trace.hpp, indirectWeightOfSample).
     void render(const GBuffer& gbuffer, GLuint directRadiance, GLuint indirect, const ViewTransform& camera,
-                float depthScale, const DisplaySettings& display, int samplesInAverage, GLuint debugImage = 0,
-                bool toneMapDebugImage = false);
+                float depthScale, const DisplaySettings& display, int samplesInAverage, float indirectWeight = 1.0f,
+                GLuint debugImage = 0, bool toneMapDebugImage = false);
 
     ImageF readHdr() const;  // rows top to bottom
     Image8 readLdr() const;
     GLuint ldr() const { return ldr_.id(); }
-    std::size_t bytes() const { return std::size_t(width_) * height_ * (16 + 16 + 4); }
+    std::size_t bytes() const { return std::size_t(width_) * height_ * (16 + 16 + 16 + 4); }
 
 private:
     int width_, height_;
-    gl::Texture hdr_, hdrSum_, ldr_;
+    gl::Texture hdr_, hdrSum_, indirectSum_, ldr_;
     gl::Program program_;
 };
 

@@ -172,6 +172,11 @@ SampleCones conesForSample(const ConeSettings& frame, int sample) {
     return s;
 }
 
+float indirectWeightOfSample(const ConeSettings& frame, int sample) {
+    if (!frame.narrowConesAfterFirstSample || frame.rays <= 0) return 1.0f;
+    return float(conesForSample(frame, sample).cones.rays);
+}
+
 bool parseSampleCones(const std::string& name) {
     if (name != "narrow" && name != "frame") fail("--sample-cones must be narrow or frame, not '", name, "'");
     return name == "narrow";

@@ -129,9 +129,14 @@ struct SampleCones {
 };
 // Sample 0, alone in a plain frame, traces `frame` as it is. With narrowConesAfterFirstSample,
 // every later sample k traces kNarrowConesPerLaterSample narrow cones, the (k−1)-th of the
-// sequence; the average over N samples then holds the frame's own cones with weight 1/N.
-// Without, every sample traces `frame`.
+// sequence. Without, every sample traces `frame`.
 SampleCones conesForSample(const ConeSettings& frame, int sample);
+// The weight of sample `sample`'s indirect light in the average of an accumulated frame (the
+// composite pass; direct light averages with equal weights): the narrow cones it traced per
+// traced pixel, so that a frame's own four cones count as four later samples' one each. Weighted
+// 1/N like its direct light, the first sample's four cones would hold no more than one later
+// cone, and 2 or 4 samples came out noisier than one. 1 where every sample traces alike.
+float indirectWeightOfSample(const ConeSettings& frame, int sample);
 // `--sample-cones`: "narrow" (narrowConesAfterFirstSample) or "frame"; throws naming the option.
 bool parseSampleCones(const std::string& name);
 const char* sampleConesName(bool narrowConesAfterFirstSample);
