@@ -196,6 +196,7 @@ ConeSettings voxelGatherCones(ConeSettings settings) {
     settings.carryVoxels = ConeSettings{}.carryVoxels;
     settings.nearField = ConeSettings{}.nearField;  // a voxel's cones have no G-buffer to follow
     settings.nearDetail = ConeSettings{}.nearDetail;  // nor pixels
+    settings.offset += kVoxelCentreToSurface;
     return settings;
 }
 
