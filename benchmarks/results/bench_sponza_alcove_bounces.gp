@@ -2,23 +2,23 @@
 set terminal pngcairo size 2100,700 enhanced font 'DejaVu Sans,10'
 set output "bench_sponza_alcove_bounces.png"
 $engine << EOD
-1904 0.0137803 0.00350599 "default"
-8595 0.0138205 0.00379146 "bounces=4"
+1999 0.0138981 0.00348758 "default"
+8763 0.0139521 0.0037948 "bounces=4"
 EOD
 $pathtracer << EOD
-43.82 0.0305094 0.0246569 "1"
-171.6 0.0162541 0.012598 "4"
-650.9 0.0084139 0.00641549 "16"
-2553 0.00424466 0.00327996 "64"
+43.73 0.0305094 0.0246569 "1"
+170.7 0.0162541 0.012598 "4"
+667.9 0.0084139 0.00641549 "16"
+2642 0.00424466 0.00327996 "64"
 EOD
 $pareto << EOD
-1904 0.0137803 0.00350599 "default"
+1999 0.0138981 0.00348758 "default"
 EOD
 $paretoIndirect << EOD
-1904 0.0137803 0.00350599 "default"
+1999 0.0138981 0.00348758 "default"
 EOD
 $default << EOD
-1904 0.0137803 0.00350599 "default"
+1999 0.0138981 0.00348758 "default"
 EOD
 set xtics ("1" 1, "2" 2, "5" 5, "10" 10, "20" 20, "50" 50, "100" 100, "200" 200, "500" 500, "1000" 1000, "2000" 2000, "5000" 5000, "10000" 10000, "20000" 20000, "50000" 50000, "100000" 100000, "200000" 200000, "500000" 500000)
 noise = 0.00148557
@@ -54,8 +54,8 @@ unset logscale y
 set ytics auto
 set format y '%g'
 set xtics ("100" 100, "200" 200, "500" 500, "1000" 1000, "2000" 2000, "5000" 5000, "10000" 10000, "20000" 20000, "50000" 50000, "100000" 100000, "200000" 200000, "500000" 500000)
-set xrange [1464.4:15470.4]
-set yrange [0.013725:0.0138758]
+set xrange [1537.62:15773]
+set yrange [0.0138423:0.0140079]
 set key top left box opaque font ',9'
 set ylabel 'RMSE of the full image vs reference (linear)'
 set title 'vct points only (zoom; full image)'

@@ -2,23 +2,23 @@
 set terminal pngcairo size 2100,700 enhanced font 'DejaVu Sans,10'
 set output "bench_sponza_alternate_bounces.png"
 $engine << EOD
-2008 0.021401 0.0100743 "default"
-8834 0.0217216 0.0105228 "bounces=4"
+1960 0.0212427 0.00953957 "default"
+8922 0.0215589 0.00998839 "bounces=4"
 EOD
 $pathtracer << EOD
-55.44 0.105219 0.0780602 "1"
-210.9 0.0544929 0.0388028 "4"
-846.6 0.0280296 0.0197261 "16"
-3311 0.0147533 0.0104631 "64"
+57.28 0.105219 0.0780602 "1"
+230.1 0.0544929 0.0388028 "4"
+873.8 0.0280296 0.0197261 "16"
+3503 0.0147533 0.0104631 "64"
 EOD
 $pareto << EOD
-2008 0.021401 0.0100743 "default"
+1960 0.0212427 0.00953957 "default"
 EOD
 $paretoIndirect << EOD
-2008 0.021401 0.0100743 "default"
+1960 0.0212427 0.00953957 "default"
 EOD
 $default << EOD
-2008 0.021401 0.0100743 "default"
+1960 0.0212427 0.00953957 "default"
 EOD
 set xtics ("1" 1, "2" 2, "5" 5, "10" 10, "20" 20, "50" 50, "100" 100, "200" 200, "500" 500, "1000" 1000, "2000" 2000, "5000" 5000, "10000" 10000, "20000" 20000, "50000" 50000, "100000" 100000, "200000" 200000, "500000" 500000)
 noise = 0.00490899
@@ -54,8 +54,8 @@ unset logscale y
 set ytics auto
 set format y '%g'
 set xtics ("100" 100, "200" 200, "500" 500, "1000" 1000, "2000" 2000, "5000" 5000, "10000" 10000, "20000" 20000, "50000" 50000, "100000" 100000, "200000" 200000, "500000" 500000)
-set xrange [1544.78:15900.7]
-set yrange [0.0213142:0.0218084]
+set xrange [1507.73:16059.1]
+set yrange [0.0211565:0.0216451]
 set key top left box opaque font ',9'
 set ylabel 'RMSE of the full image vs reference (linear)'
 set title 'vct points only (zoom; full image)'

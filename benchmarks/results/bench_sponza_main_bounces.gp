@@ -2,23 +2,23 @@
 set terminal pngcairo size 2100,700 enhanced font 'DejaVu Sans,10'
 set output "bench_sponza_main_bounces.png"
 $engine << EOD
-1992 0.0320324 0.00948997 "default"
-8709 0.0322456 0.0100503 "bounces=4"
+1981 0.0224033 0.00904138 "default"
+8986 0.0226735 0.00957922 "bounces=4"
 EOD
 $pathtracer << EOD
-48.54 0.100829 0.0785631 "1"
-186 0.0539345 0.0399594 "4"
-689.5 0.0272064 0.0201032 "16"
-2866 0.0141749 0.0104963 "64"
+49.28 0.100829 0.0785631 "1"
+193.9 0.0539345 0.0399594 "4"
+786.1 0.0272064 0.0201032 "16"
+3135 0.0141749 0.0104963 "64"
 EOD
 $pareto << EOD
-1992 0.0320324 0.00948997 "default"
+1981 0.0224033 0.00904138 "default"
 EOD
 $paretoIndirect << EOD
-1992 0.0320324 0.00948997 "default"
+1981 0.0224033 0.00904138 "default"
 EOD
 $default << EOD
-1992 0.0320324 0.00948997 "default"
+1981 0.0224033 0.00904138 "default"
 EOD
 set xtics ("1" 1, "2" 2, "5" 5, "10" 10, "20" 20, "50" 50, "100" 100, "200" 200, "500" 500, "1000" 1000, "2000" 2000, "5000" 5000, "10000" 10000, "20000" 20000, "50000" 50000, "100000" 100000, "200000" 200000, "500000" 500000)
 noise = 0.00476674
@@ -54,8 +54,8 @@ unset logscale y
 set ytics auto
 set format y '%g'
 set xtics ("100" 100, "200" 200, "500" 500, "1000" 1000, "2000" 2000, "5000" 5000, "10000" 10000, "20000" 20000, "50000" 50000, "100000" 100000, "200000" 200000, "500000" 500000)
-set xrange [1532.2:15676.4]
-set yrange [0.0319034:0.0323746]
+set xrange [1524.12:16175.7]
+set yrange [0.0223126:0.0227641]
 set key top left box opaque font ',9'
 set ylabel 'RMSE of the full image vs reference (linear)'
 set title 'vct points only (zoom; full image)'
