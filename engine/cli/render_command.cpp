@@ -82,7 +82,11 @@ void run(const RenderOptions& o) {
     if (o.memoryBudgetMiB) setMemoryBudgetMiB(*o.memoryBudgetMiB);
     checkMemoryBudget(scene, MemoryRequest{settings.width, settings.height, photonMapResolution(settings),
                                            settings.voxelLevels, needsOctree(settings), needsRadiance(settings),
-                                           settings.bounces > 1, settings.shadowMapResolution});
+                                           settings.bounces > 1, settings.shadowMapResolution,
+                                           settings.giResolution == GiResolution::Auto
+                                               ? 0
+                                               : giBlockSize(settings.giResolution, settings.width, settings.height),
+                                           settings.cones.rays});
 
     auto context = gl::createContext(backend);
     Renderer renderer(scene, settings);

@@ -6,6 +6,7 @@
 #include <cstring>
 
 #include "core/error.hpp"
+#include "render/cone_trace.hpp"
 #include "render/light_view.hpp"
 #include "voxel/voxel_grid.hpp"
 #include "voxel/voxelize.hpp"
@@ -67,11 +68,18 @@ void halveMaps(MemoryRequest& r) {
 
 MemoryEstimate estimate(const Scene& scene, const MemoryRequest& r) {
     MemoryEstimate e;
-    // G-buffer 60, direct 16, indirect 16 (and 20 per 2×2 block for cones traced in blocks, 5 per
-    // pixel, plus 4 for the list of pixels that trace their own), the light carried over camera
-    // moves 61 (render/cone_carry.hpp: 60, and 1 for its list of cells to trace), composite 36
-    // (average, sum, 8-bit), voxel view 16 bytes per pixel.
-    e.imageTargets = std::size_t(r.width) * std::size_t(r.height) * (60 + 16 + 16 + 5 + 4 + 61 + 36 + 16);
+    // Per pixel: G-buffer 60, direct 16, composite 52 (average, sum, weighted indirect sum, 8-bit),
+    // voxel view 16; the cones' (render/cone_trace.cpp, ConeTrace::bytes): irradiance 16, the list of
+    // pixels that trace their own 20, the edge-aware filter 32, the light carried over camera moves
+    // 60, the near field's detail 16. Per traced cell (one pixel of each giBlock² block): its
+    // irradiance and pixel 20 (in blocks), the carry's list 4, the near detail's visibility 12 and
+    // the shared cones (32 bytes each, and 16).
+    const std::size_t pixels = std::size_t(r.width) * std::size_t(r.height);
+    const int block = r.giBlock > 0 ? r.giBlock : giBlockSize(GiResolution::Auto, r.width, r.height);
+    const std::size_t cells = std::size_t((r.width + block - 1) / block) * std::size_t((r.height + block - 1) / block);
+    const std::size_t sharedCones = r.coneRays > 0 ? cells * (std::size_t(r.coneRays) * 32 + 16) : 0;
+    e.imageTargets = pixels * (60 + 16 + 52 + 16) + pixels * (16 + 20 + 32 + 60 + 16) +
+                     cells * ((block > 1 ? 20 : 0) + 4 + 12) + sharedCones;
     // Depth 4, position 16, normal 8, flux 16 bytes per texel, one map per light, and a finer
     // shadow map (depth, 4 bytes per texel) beside each.
     // A point light has six maps (a cube), the others one; its faces' shadow maps are coarser.
