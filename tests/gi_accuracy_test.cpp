@@ -41,6 +41,11 @@ constexpr double kCornellMean[2] = {0.9, 1.1}, kCornellCells[2] = {0.75, 1.33};
 // The cone set (`--cone-rays 0`), which errs more: its measured 0.96x [0.46..1.37] with room.
 constexpr double kConeSetCornellMean[2] = {0.85, 1.1}, kConeSetCornellCells[2] = {0.4, 1.4};
 constexpr double kSponzaMean[2] = {0.85, 1.1}, kSponzaCells[2] = {0.75, 1.4};
+// Sponza under suns other than its own (benchmarks/sun_directions.sh): the indirect light comes out
+// darker under every one (CameraMain 128x72: 0.869 [cells 0.74..1.13] under the glTF loader's
+// default sun, 0.780 [0.59..1.13] under a low sun from the east). Not issue 12's bounds: a guard
+// that tuning under the own sun does not make the others worse.
+constexpr double kOtherSunMean[2] = {0.7, 1.1}, kOtherSunCells[2] = {0.45, 1.4};
 constexpr double kFurnaceMeanTolerance = 0.05, kFurnaceLowTolerance = 0.1;  // of 1.5
 constexpr double kFurnaceBouncesTolerance = 0.05;  // of 1.75 and 1.875 (the acceptance bound)
 // The sun's light inside the closed furnace, along its seams (frame.md, Known limits), in units of
@@ -704,6 +709,19 @@ TEST(GiAccuracy, NarrowConesSeeTheSecondBounceInTheVoxels) {
     std::printf("[ accuracy ] Sponza CameraMain 96x54, 16 narrow cones: the second bounce %.3f× the path tracer's\n", ratio);
     EXPECT_GE(ratio, kNarrowSecondBounce[0]);
     EXPECT_LE(ratio, kNarrowSecondBounce[1]);
+}
+
+TEST(GiAccuracy, SponzaUnderOtherSunsStaysWithinItsKnownLimits) {
+    const test::CommandResult found = test::runVct("info --scene sponza");
+    if (found.exitCode != 0) GTEST_SKIP() << "Sponza is not in the asset search path: " << found.output;
+    const auto dir = test::testDir();
+    for (const char* sun : {"-0.2822,-0.9407,-0.1881", "0.7,-0.65,-0.2"}) {
+        const std::string view = std::string("--scene sponza --camera CameraMain --width 128 --height 72 --sun-dir ") +
+                                 sun + " --sun-irradiance 10";
+        const IndirectPair parts = indirectParts(dir, view, 256);
+        expectIndirectWithin(parts, (std::string("Sponza CameraMain 128x72, sun ") + sun).c_str(), kOtherSunMean[0],
+                             kOtherSunMean[1], kOtherSunCells[0], kOtherSunCells[1]);
+    }
 }
 
 TEST(GiAccuracy, IndirectLightMatchesThePathTracerOnSponza) {
