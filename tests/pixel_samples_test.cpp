@@ -1,6 +1,7 @@
 // Anti-aliased, accumulated frames (`vct render --samples N`): where the samples look inside the
 // pixel, and that averaging them brings the engine's direct light to the reference's, which
 // integrates over the pixel's area.
+#include <array>
 #include <cmath>
 #include <fstream>
 #include <iterator>
@@ -41,6 +42,21 @@ ImageF renderSamples(const std::filesystem::path& dir, const std::string& view, 
                                                out.string() + ".pfm");
     EXPECT_EQ(r.exitCode, 0) << r.output;
     return r.exitCode == 0 ? readHdrImage(out.string() + ".pfm") : ImageF();
+}
+
+// The RMSE against `truth` of the engine's `aov` of `view` averaged over 1, 2, 4 and 16 pixel
+// samples, printed after `what`; NaN for a render that failed (which fails every bound on it).
+std::array<double, 4> errorBySampleCount(const std::filesystem::path& dir, const std::string& view,
+                                         const std::string& aov, const ImageF& truth, const char* what) {
+    const int samples[4] = {1, 2, 4, 16};
+    std::array<double, 4> error{};
+    for (int i = 0; i < 4; ++i) {
+        const ImageF image = renderSamples(dir, view, aov, samples[i]);
+        error[i] = image.rgba.empty() ? std::nan("") : metrics::rmse(image, truth);
+    }
+    std::printf("[ samples  ] %s against the reference: RMSE %.4f with 1 sample, %.4f with 2, %.4f with 4, %.4f with 16\n",
+                what, error[0], error[1], error[2], error[3]);
+    return error;
 }
 
 // A 32×32 texture of white tiles with dark joints one texel wide every 8 texels, as PNG bytes.
@@ -135,17 +151,8 @@ TEST(PixelSamples, AFewSamplesAddNoNoiseToTheIndirectLight) {
     const test::CommandResult r = test::runVct("reference -q " + view + " --bounces 1 --spp 512 -o " +
                                                truthFile.string() + " --indirect-out " + indirectFile.string());
     ASSERT_EQ(r.exitCode, 0) << r.output;
-    const ImageF truth = readHdrImage(indirectFile);
-    const int samples[4] = {1, 2, 4, 16};
-    double error[4] = {0, 0, 0, 0};
-    for (int i = 0; i < 4; ++i) {
-        const ImageF gi = renderSamples(dir, view, "gi", samples[i]);
-        ASSERT_FALSE(gi.rgba.empty());
-        error[i] = metrics::rmse(gi, truth);
-    }
-    std::printf("[ samples  ] Cornell indirect light against the reference: RMSE %.4f with 1 sample, %.4f with 2, "
-                "%.4f with 4, %.4f with 16\n",
-                error[0], error[1], error[2], error[3]);
+    const std::array<double, 4> error =
+        errorBySampleCount(dir, view, "gi", readHdrImage(indirectFile), "Cornell indirect light");
     // Margins for other drivers: 2 samples measured 0.95x one (1.30x before), 4 samples 0.85x (1.05x).
     EXPECT_LT(error[1], 1.1 * error[0]);
     EXPECT_LT(error[2], error[0]);
@@ -165,16 +172,8 @@ TEST(PixelSamples, JitteredSamplesOfAGrazingTiledFloorConvergeToItsArea) {
     const std::string view = grazingTiledQuadView(dir, "tiles", {{0, 8}, {8, 8}, {8, 0}, {0, 0}});
     const ImageF truth = referenceDirect(dir, view, 1024);
     ASSERT_FALSE(truth.rgba.empty());
-    const int samples[4] = {1, 2, 4, 16};
-    double error[4] = {0, 0, 0, 0};
-    for (int i = 0; i < 4; ++i) {
-        const ImageF albedo = renderSamples(dir, view + " --voxel-levels 5 --gi off", "albedo", samples[i]);
-        ASSERT_FALSE(albedo.rgba.empty());
-        error[i] = metrics::rmse(albedo, truth);
-    }
-    std::printf("[ samples  ] grazing tiled floor, albedo against the reference: RMSE %.4f with 1 sample, %.4f with 2, "
-                "%.4f with 4, %.4f with 16\n",
-                error[0], error[1], error[2], error[3]);
+    const std::array<double, 4> error = errorBySampleCount(dir, view + " --voxel-levels 5 --gi off", "albedo", truth,
+                                                           "grazing tiled floor, albedo");
     // One sample's filter over its whole pixel is close to the area here; the first few jittered
     // samples, each over a share of it, cannot beat it yet (0.047 and 0.043: 1.26x and 1.17x) but
     // must not stray far from it (2.0x and 1.6x before), and sixteen come well below it.

@@ -83,10 +83,7 @@ void run(const RenderOptions& o) {
     checkMemoryBudget(scene, MemoryRequest{settings.width, settings.height, photonMapResolution(settings),
                                            settings.voxelLevels, needsOctree(settings), needsRadiance(settings),
                                            settings.bounces > 1, settings.shadowMapResolution,
-                                           settings.giResolution == GiResolution::Auto
-                                               ? 0
-                                               : giBlockSize(settings.giResolution, settings.width, settings.height),
-                                           settings.cones.rays});
+                                           settings.giResolution, settings.cones.rays});
 
     auto context = gl::createContext(backend);
     Renderer renderer(scene, settings);

@@ -6,7 +6,6 @@
 #include <cstring>
 
 #include "core/error.hpp"
-#include "render/cone_trace.hpp"
 #include "render/light_view.hpp"
 #include "voxel/voxel_grid.hpp"
 #include "voxel/voxelize.hpp"
@@ -73,11 +72,12 @@ MemoryEstimate estimate(const Scene& scene, const MemoryRequest& r) {
     // pixels that trace their own 20, the edge-aware filter 32, the light carried over camera moves
     // 60, the near field's detail 16. Per traced cell (one pixel of each giBlock² block): its
     // irradiance and pixel 20 (in blocks), the carry's list 4, the near detail's visibility 12 and
-    // the shared cones (32 bytes each, and 16).
+    // the shared cones (ConeReuse::coneBytes, and 16).
     const std::size_t pixels = std::size_t(r.width) * std::size_t(r.height);
-    const int block = r.giBlock > 0 ? r.giBlock : giBlockSize(GiResolution::Auto, r.width, r.height);
-    const std::size_t cells = std::size_t((r.width + block - 1) / block) * std::size_t((r.height + block - 1) / block);
-    const std::size_t sharedCones = r.coneRays > 0 ? cells * (std::size_t(r.coneRays) * 32 + 16) : 0;
+    const int block = giBlockSize(r.giResolution, r.width, r.height);
+    const int cellsWide = (r.width + block - 1) / block, cellsHigh = (r.height + block - 1) / block;
+    const std::size_t cells = std::size_t(cellsWide) * std::size_t(cellsHigh);
+    const std::size_t sharedCones = r.coneRays > 0 ? ConeReuse::coneBytes(cellsWide, cellsHigh, r.coneRays) + cells * 16 : 0;
     e.imageTargets = pixels * (60 + 16 + 52 + 16) + pixels * (16 + 20 + 32 + 60 + 16) +
                      cells * ((block > 1 ? 20 : 0) + 4 + 12) + sharedCones;
     // Depth 4, position 16, normal 8, flux 16 bytes per texel, one map per light, and a finer

@@ -14,6 +14,7 @@
 #include <optional>
 #include <string>
 
+#include "render/cone_trace.hpp"
 #include "scene/scene.hpp"
 
 namespace vct {
@@ -26,9 +27,8 @@ struct MemoryRequest {
     bool radiance = true;  // GI or the radiance view
     bool bounces = false;  // further bounces (`--bounces` > 1): a copy of every voxel's first bounce
     int shadowMapResolution = 0;  // a depth map of its own per light-view map when above lightViewResolution
-    int giBlock = 0;    // cones traced at one pixel of each giBlock × giBlock block; 0: --gi-resolution auto's
-                        // choice for the image's size (render/cone_trace.hpp, giBlockSize)
-    int coneRays = 4;   // narrow cones per traced pixel (0: the cone set), kept per cell to share them
+    GiResolution giResolution = GiResolution::Auto;  // which pixels trace cones (giBlockSize)
+    int coneRays = kDefaultNarrowCones;  // narrow cones per traced pixel (0: the cone set), kept to share them
 };
 
 struct MemoryEstimate {
