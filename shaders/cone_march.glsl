@@ -516,6 +516,42 @@ void storeConeSample(int k, vec3 direction, vec4 cone, bool traced) {
 // voxels' gathers have no G-buffer and meet nothing.
 #ifdef SCREEN_NEAR_FIELD
 bool nearFieldHit(vec3 direction, out vec4 seen);  // near_field.glsl
+
+// The near field's surface met from the side the camera does not see (near_field.glsl): what the
+// first lit voxel along the axis from `point` (on a surface of unit `normal`), within `length`
+// scene units and one voxel more (a surface on a voxel's face lies in the voxel past it as much as
+// in the one before), sends back along it: its radiance times its exit shares towards the pixel,
+// as a cone passing through it would see it. The G-buffer holds only the side the camera sees; the
+// voxels hold the light of both. Voxels whose lit surface (its photons' mean place) lies less than
+// kOffOwnSurface off the pixel's plane are passed: a ray at a grazing angle crosses the voxels of
+// its own floor first, whose light leaves along the floor's normal, not towards the pixel.
+const float kOffOwnSurface = 0.25;  // voxels
+bool hiddenSideLight(vec3 point, vec3 normal, vec3 direction, float length, out vec3 radiance) {
+    radiance = vec3(0.0);
+    const vec3 start = (point - uVoxelOrigin) * uVoxelScale;
+    const uvec3 own = uvec3(floor(start));
+    const float span = length * uVoxelScale + 1.0;
+    const int steps = max(int(ceil(2.0 * span)), 1);  // two a voxel: no voxel along the axis skipped
+    for (int k = 1; k <= steps; ++k) {
+        const vec3 p = start + direction * (span * float(k) / float(steps));
+        if (any(lessThan(p, vec3(0.0))) || any(greaterThanEqual(p, vec3(float(1 << uLevels))))) return false;
+        const uvec3 cell = uvec3(floor(p));
+        if (all(equal(cell, own))) continue;
+        uint voxel = 0u;
+        for (int level = 1; level <= uLevels && voxel != NONE; ++level)
+            voxel = childOf(voxel, childSlot(cell >> uint(uLevels - level)));
+        if (voxel == NONE) continue;
+        const uint index = voxel - uLevelStart[uLevels];
+        vec3 place;
+        if (!litPlace(index, place) || dot(vec3(cell) + place - start, normal) < kOffOwnSurface) continue;
+        const vec4 opacity = unpackUnorm4x8(coneCellOpacity[index]);
+        vec4 seen = vec4(0.0);
+        for (int a = 0; a < 3; ++a) seen += abs(direction[a]) * voxelSeenAlong(index, 2 * a + (direction[a] < 0.0 ? 1 : 0), opacity[a]);
+        radiance = seen.a > 0.0 ? max(seen.rgb / seen.a, vec3(0.0)) : vec3(0.0);
+        return true;
+    }
+    return false;
+}
 #else
 bool nearFieldHit(vec3 direction, out vec4 seen) {
     seen = vec4(0.0);

@@ -27,6 +27,11 @@ uniform int uBlock;
 
 #ifdef NEAR_VISIBILITY
 #define NEAR_FIELD_STEPS 4
+// Visibility only: what a surface met sends does not matter here.
+bool hiddenSideLight(vec3 point, vec3 normal, vec3 direction, float length, out vec3 radiance) {
+    radiance = vec3(0.0);
+    return false;
+}
 #include "near_field.glsl"
 #include "narrow_cone_directions.glsl"
 layout(r32f, binding = IMAGE_NEAR_VISIBILITY) uniform writeonly image2D uVisibility;

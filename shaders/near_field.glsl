@@ -5,10 +5,16 @@
 // where the cone starts, against the G-buffer: where it passes behind a surface the camera sees,
 // the ray has met that surface, and its radiance (direct light and emission, what the first
 // bounce sends) takes the cone's place, fully opaque. A surface met from the side the camera does
-// not see sends light the G-buffer does not hold: it only blocks. What the camera does not see
+// not see (the sunlit face of a column or a curtain fold seen from behind, the inside of an arch)
+// sends light the G-buffer does not hold: the voxels there say what it sends back along the axis
+// (hiddenSideLight, defined by the includer), or it only blocks. What the camera does not see
 // (off screen, hidden) leaves the cone as it was.
-// Requires cone_march.glsl (uVoxelScale, uConeOffset) and the G-buffer samplers uPosition and
-// uGeometricNormal (cone_trace_common.glsl).
+// Requires uVoxelScale, uConeOffset, the G-buffer samplers uPosition and uGeometricNormal
+// (cone_trace_common.glsl), and
+//   bool hiddenSideLight(vec3 point, vec3 normal, vec3 direction, float length, out vec3 radiance):
+// the light that the surface met within about `length` (scene units) of `point` along
+// `direction` sends back towards it, where it knows it (cone_march.glsl, from the voxels). The
+// ray is stopped up to a step before the surface: the length asked reaches a step past it.
 layout(binding = TEXTURE_NEAR_FIELD_DIRECT) uniform sampler2D uNearFieldDirect;
 layout(binding = TEXTURE_NEAR_FIELD_EMISSIVE) uniform sampler2D uNearFieldEmissive;
 uniform mat4 uViewProjection;  // scene-local to clip space, as the G-buffer was rasterized
@@ -55,8 +61,11 @@ bool nearFieldHit(vec3 direction, out vec4 seen) {
         const float behindAlongView = distance(q, uEye) - distance(surface.xyz, uEye);
         if (behindPlane < 0.05 * voxel || behindPlane > step + 0.1 * voxel || behindAlongView > reach) continue;
         seen.a = 1.0;
+        vec3 hidden;
         if (dot(surfaceNormal, direction) < 0.0)
             seen.rgb = texelFetch(uNearFieldDirect, texel, 0).rgb + texelFetch(uNearFieldEmissive, texel, 0).rgb;
+        else if (hiddenSideLight(nearFieldPoint, nearFieldNormal, direction, t + step, hidden))
+            seen.rgb = hidden;
         return true;
     }
     return false;

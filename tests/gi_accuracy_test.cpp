@@ -42,8 +42,8 @@ constexpr double kCornellMean[2] = {0.9, 1.1}, kCornellCells[2] = {0.75, 1.33};
 constexpr double kConeSetCornellMean[2] = {0.85, 1.1}, kConeSetCornellCells[2] = {0.4, 1.4};
 constexpr double kSponzaMean[2] = {0.85, 1.1}, kSponzaCells[2] = {0.75, 1.4};
 // Sponza under suns other than its own (benchmarks/sun_directions.sh): the indirect light comes out
-// darker under every one (CameraMain 128x72: 0.869 [cells 0.74..1.13] under the glTF loader's
-// default sun, 0.780 [0.59..1.13] under a low sun from the east). Not issue 12's bounds: a guard
+// darker under every one (CameraMain 128x72: 0.882 [cells 0.74..1.14] under the glTF loader's
+// default sun, 0.787 [0.59..1.13] under a low sun from the east). Not issue 12's bounds: a guard
 // that tuning under the own sun does not make the others worse.
 constexpr double kOtherSunMean[2] = {0.7, 1.1}, kOtherSunCells[2] = {0.45, 1.4};
 constexpr double kFurnaceMeanTolerance = 0.05, kFurnaceLowTolerance = 0.1;  // of 1.5
@@ -62,6 +62,10 @@ constexpr double kNarrowWallRatio[2] = {0.85, 1.15};
 // 0.93x when reads across the axis out of empty nodes reached a whole spacing past the footprint.
 constexpr double kGalleryMean[2] = {0.95, 1.12}, kGalleryCells[2] = {0.85, 1.3};
 constexpr double kNarrowSecondBounce[2] = {0.8, 1.25};  // measured 1.03
+// The floor beside a low sunlit fin that the camera sees from its dark side (the fin's light on
+// it lies within the cones' start offset: the near field's, met from its hidden side): measured
+// 0.07x the path tracer's when such a surface only blocked, 0.49x with its light from the voxels.
+constexpr double kFinFloorAtLeast = 0.3;
 // Bounces 2 and 3 in a room lit through an opening (issue 13's 0.85..1.15 for a whole image):
 // measured 0.94 with one narrow cone per voxel side (the default), 1.00 with two, 0.64 with the
 // cone set.
@@ -307,6 +311,33 @@ TEST(GiAccuracy, AGalleryGetsTheLightOfASunlitFloorItSeesAtAGrazingAngle) {
         EXPECT_GE(*cell.ratio, kGalleryCells[0]) << "cell " << cell.column << "," << cell.row;
         EXPECT_LE(*cell.ratio, kGalleryCells[1]) << "cell " << cell.column << "," << cell.row;
     }
+}
+
+TEST(GiAccuracy, TheNearFieldSeesTheLitSideOfAFinTheCameraSeesFromBehind) {
+    // A fin two voxels tall stands on a floor, lit by the sun on the side facing away from the
+    // camera, which looks down over it at the floor beyond. That floor's light off the fin comes
+    // from within the cones' start offset: the near field's rays meet the fin from its lit side,
+    // which the G-buffer does not hold (it holds the dark side): its light comes from the voxels.
+    const auto dir = test::testDir();
+    test::ObjWriter model;
+    model.material("floor", glm::vec3(0.5f));
+    model.floor(0.0f, 4.0f);
+    model.material("fin", glm::vec3(0.8f));
+    model.quad({0.06f, 0.0f, -2.0f}, {0.06f, 0.25f, -2.0f}, {0.06f, 0.25f, 2.0f}, {0.06f, 0.0f, 2.0f});
+    const std::string view = "--scene " + model.write(dir, "fin").string() +
+                             " --sun-dir -0.6,-0.8,0 --sun-irradiance 10 --eye -2,3,0.5 --target 0.4,0,0 --fov 25"
+                             " --width 96 --height 54";
+    // 64³ over the 8 m floor: voxels of 0.125 m, the fin two of them tall.
+    const IndirectPair parts = indirectParts(dir, view, 512, " --voxel-levels 6");
+    // The floor beyond the fin, within a metre of it: the top row of a 3×3 grid (the fin's dark
+    // face crosses the middle row).
+    const metrics::RegionRatios regions = metrics::regionRatios(parts.engine, parts.reference, 3, 3);
+    double engine = 0.0, reference = 0.0;
+    for (const metrics::RegionCell& cell : regions.cells)
+        if (cell.row == 0) engine += cell.meanA, reference += cell.meanB;
+    std::printf("[ accuracy ] floor beside a fin lit on its far side: indirect %.3f× the path tracer's\n", engine / reference);
+    EXPECT_GE(engine / reference, kFinFloorAtLeast);
+    EXPECT_LE(engine / reference, 1.1);
 }
 
 TEST(GiAccuracy, EveryNarrowConeOfAPixelKeepsItsLight) {

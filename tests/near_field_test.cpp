@@ -2,7 +2,8 @@
 // G-buffer made here: the camera's rays cast at a floor with a low box on it (a step a voxel tall),
 // each surface with its own direct light. A cone's axis followed from a floor point beside the box
 // must meet the box's side and bring back that side's light and emission; the same axis from the
-// far side of the box meets a face the camera does not see, which blocks without light; an axis
+// far side of the box meets a face the camera does not see, whose light the G-buffer does not hold:
+// it brings back what hiddenSideLight (in the engine: the voxels there) says that face sends; an axis
 // straight up, one along the floor's own plane and one from behind the camera meet nothing, and
 // their cones are traced as before.
 #include <cmath>
@@ -109,7 +110,8 @@ TEST(NearField, AConesAxisMeetsTheSurfacesTheCameraSeesWithinItsStartOffset) {
         {{0.95f, 0.0f, 0.0f, 0.5f}, up, axis(1.0f, 0.6f, 0.0f), {}},
         // 1: the same point straight up: nothing below the cone's start.
         {{0.95f, 0.0f, 0.0f, 0.5f}, up, axis(0.0f, 1.0f, 0.0f), {}},
-        // 2: beyond the box, towards its far side, which the camera does not see: blocked, dark.
+        // 2: beyond the box, towards its far side, which the camera does not see: blocked, with
+        // the light hiddenSideLight gives.
         {{2.05f, 0.0f, 0.0f, 0.5f}, up, axis(-1.0f, 0.3f, 0.0f), {}},
         // 3: along the floor, away from the box: its own plane meets nothing.
         {{0.5f, 0.0f, 0.5f, 0.5f}, up, axis(-1.0f, 0.05f, 0.0f), {}},
@@ -122,6 +124,11 @@ TEST(NearField, AConesAxisMeetsTheSurfacesTheCameraSeesWithinItsStartOffset) {
         "layout(binding = TEXTURE_GBUFFER_NORMAL) uniform sampler2D uNormal;\n"
         "layout(binding = TEXTURE_GBUFFER_POSITION) uniform sampler2D uPosition;\n"
         "layout(binding = TEXTURE_GBUFFER_GEOMETRIC_NORMAL) uniform sampler2D uGeometricNormal;\n"
+        // Stands for the voxels: a fixed light, and the length along the axis to the point met.
+        "bool hiddenSideLight(vec3 point, vec3 normal, vec3 direction, float length, out vec3 radiance) {\n"
+        "    radiance = vec3(0.3, 0.2, length);\n"
+        "    return true;\n"
+        "}\n"
         "#include \"near_field.glsl\"\n"
         "struct NearFieldCase { vec4 point; vec4 normal; vec4 direction; vec4 seen; };\n"
         "layout(std430, binding = SSBO_CONE_COUNTERS) buffer Cases { NearFieldCase cases[]; };\n"
@@ -164,7 +171,14 @@ TEST(NearField, AConesAxisMeetsTheSurfacesTheCameraSeesWithinItsStartOffset) {
 
     EXPECT_EQ(out[0].seen, glm::vec4(0.0f, 0.0f, 0.75f, 1.0f)) << "the box's side, its direct light and emission";
     EXPECT_EQ(out[1].seen.w, -1.0f) << "nothing below the cone's start straight up";
-    EXPECT_EQ(out[2].seen, glm::vec4(0.0f, 0.0f, 0.0f, 1.0f)) << "a face the camera does not see blocks, dark";
+    // The far side (x = 2) lies 0.05 × 1.044 = 0.052 along the axis. At this grazing angle the march
+    // reaches three times the offset (0.45) in six steps of 0.075, at jitter 0.5 at 0.0375, 0.1125,
+    // ...: it stops at the first step past the face and asks hiddenSideLight for a step further.
+    EXPECT_FLOAT_EQ(out[2].seen.x, 0.3f) << "a face the camera does not see: the light hiddenSideLight gives";
+    EXPECT_FLOAT_EQ(out[2].seen.y, 0.2f);
+    EXPECT_GT(out[2].seen.z, 0.052f + 0.075f) << "the length asked: a step past the face";
+    EXPECT_LT(out[2].seen.z, 0.052f + 2.0f * 0.075f);
+    EXPECT_EQ(out[2].seen.w, 1.0f) << "blocked";
     EXPECT_EQ(out[3].seen.w, -1.0f) << "the floor's own plane";
     EXPECT_EQ(out[4].seen.w, -1.0f) << "behind the camera";
 }
