@@ -224,10 +224,11 @@ float coneDiameter(float t, float tanHalfAngle) { return max(2.0 * t * tanHalfAn
 // reach up to two of its level's spacings from p (interpolation and slab): sampled coarser, a cone
 // near its surface would read the surface itself, or what lies behind it (the lit side of a thin
 // wall, a roof's sunlit top), and be blocked or lit by it. Near the surface cones are therefore
-// sampled finer than their width; at a distance their width decides.
-float coneLod(float t, float tanHalfAngle, vec3 direction, vec3 normal) {
+// sampled finer than their width; at a distance their width decides. `startHeight`: how far the
+// cone's origin lies off that surface, in voxels.
+float coneLod(float t, float tanHalfAngle, vec3 direction, vec3 normal, float startHeight) {
     float diameter = coneDiameter(t, tanHalfAngle);
-    float height = uConeOffset + t * dot(direction, normal);
+    float height = startHeight + t * dot(direction, normal);
     return min(log2(diameter), log2(max(height, 1.0)) - 1.0);
 }
 
@@ -406,7 +407,7 @@ bool sampleRadiance(vec3 p, float lod, vec3 origin, vec3 invDirection, out vec4 
 // One cone: accumulated premultiplied radiance (rgb) and opacity (a). Samples may be lifted off
 // the surface along its normal by uConeLift × the cone diameter (0 by default: coneLod keeps
 // samples off their own surface).
-vec4 traceCone(vec3 origin, vec3 normal, vec3 direction, float tanHalfAngle) {
+vec4 traceCone(vec3 origin, vec3 normal, vec3 direction, float tanHalfAngle, float startHeight) {
     vec3 invDirection = 1.0 / direction;
     float n = float(1 << uLevels);
     float tEnd = min(rayBox(origin, invDirection, vec3(0.0), vec3(n)).y, uMaxDistance);
@@ -421,7 +422,7 @@ vec4 traceCone(vec3 origin, vec3 normal, vec3 direction, float tanHalfAngle) {
         float tSkip;
         vec3 emptyLo;
         int emptyLevel;
-        float lod = coneLod(t, tanHalfAngle, direction, normal);
+        float lod = coneLod(t, tanHalfAngle, direction, normal, startHeight);
         if (!sampleRadiance(p, lod, origin, invDirection, value, tSkip, emptyLo, emptyLevel)) {
             // Skip the empty node along the very sample sequence a plain march would take
             // (arithmetic only, no lookups): jumping straight to the node's exit would shift the
@@ -432,7 +433,7 @@ vec4 traceCone(vec3 origin, vec3 normal, vec3 direction, float tanHalfAngle) {
             bool skip = true;
             while (skip) {
                 t += stepLength(coneDiameter(t, tanHalfAngle), lod);
-                lod = coneLod(t, tanHalfAngle, direction, normal);
+                lod = coneLod(t, tanHalfAngle, direction, normal, startHeight);
                 int coarseLevel = coarseLevelFor(lod);
                 vec3 next = origin + direction * t + normal * (uConeLift * coneDiameter(t, tanHalfAngle));
                 skip = t < tSkip && coarseLevel >= emptyLevel && readsStayInside(next, coarseLevel, emptyLo, size);
@@ -559,6 +560,19 @@ bool nearFieldHit(vec3 direction, out vec4 seen) {
 }
 #endif
 
+// How far off its surface a narrow cone whose axis makes `cosine` with the normal starts, in voxels:
+// uConeOffset, but lower for an axis within about 19° of the surface, down to two thirds of it. The
+// near field follows the axis up to uConeOffset high, or three times uConeOffset along it at a
+// grazing angle (near_field.glsl); the cone then starts straight above the pixel, so what stands
+// lower than its start beyond the near field's reach (a kerb, the foot of a wall a metre away, a
+// fin two voxels tall) lies under every grazing cone. Starting lower, they see it; starting a
+// voxel or less off the surface, they read the surface's own voxels and see through a wall at
+// 45° to the grid (docs/benchmark.md, "Grazing cones start lower").
+const float kLowestGrazingStart = 2.0 / 3.0;  // of uConeOffset
+float grazingConeStart(float cosine) {
+    return uConeOffset * clamp(3.0 * cosine, kLowestGrazingStart, 1.0);
+}
+
 // Narrow cones instead of the cone set (`--cone-rays`, and the later samples of an accumulated
 // frame): uRayCount cones, each of weight π/N, whose axes sample the cosine-weighted hemisphere
 // (sin²θ and azimuth uniform, narrow_cone_directions.glsl) shifted by `shift` (narrowConeShift).
@@ -583,7 +597,8 @@ vec4 gatherNarrowCones(vec3 origin, vec3 normal, vec3 surfaceNormal, vec2 shift)
         if (dot(direction, surfaceNormal) > 0.0 && !nearFieldHit(direction, cone)) {
             coneAxis = direction;
             coneSpread(direction, uRayTanHalfAngle, coneAlongPlus, coneAlongMinus);
-            cone = traceCone(origin, normal, direction, uRayTanHalfAngle);
+            const float startHeight = grazingConeStart(dot(direction, normal));
+            cone = traceCone(origin - normal * (uConeOffset - startHeight), normal, direction, uRayTanHalfAngle, startHeight);
         }
 #ifdef STORE_CONE_SAMPLES
         storeConeSample(k, direction, cone, dot(direction, surfaceNormal) > 0.0);
@@ -616,7 +631,7 @@ vec4 gatherIrradiance(vec3 origin, vec3 normal, vec3 surfaceNormal, vec2 narrowS
         if (inFront > 0.0) {
             coneAxis = direction;
             coneSpread(direction, tanHalfAngle, coneAlongPlus, coneAlongMinus);
-            cone = mix(cone, traceCone(origin, normal, direction, tanHalfAngle), inFront);
+            cone = mix(cone, traceCone(origin, normal, direction, tanHalfAngle, uConeOffset), inFront);
         }
         gathered += uConeWeight[c] * cone;
     }

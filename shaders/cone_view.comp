@@ -34,7 +34,7 @@ void main() {
         coneSpread(direction, uViewTanHalfAngle, coneAlongPlus, coneAlongMinus);
         // The direction stands in for the surface normal: the cone is as far from "its surface"
         // as it has travelled, so its footprint alone sets its level.
-        seen = traceCone(origin, direction, direction, uViewTanHalfAngle);
+        seen = traceCone(origin, direction, direction, uViewTanHalfAngle, uConeOffset);
     }
     imageStore(uOutput, pixel, seen);
 }

@@ -62,10 +62,11 @@ constexpr double kNarrowWallRatio[2] = {0.85, 1.15};
 // 0.93x when reads across the axis out of empty nodes reached a whole spacing past the footprint.
 constexpr double kGalleryMean[2] = {0.95, 1.12}, kGalleryCells[2] = {0.85, 1.3};
 constexpr double kNarrowSecondBounce[2] = {0.8, 1.25};  // measured 1.03
-// The floor beside a low sunlit fin that the camera sees from its dark side (the fin's light on
-// it lies within the cones' start offset: the near field's, met from its hidden side): measured
-// 0.07x the path tracer's when such a surface only blocked, 0.49x with its light from the voxels.
-constexpr double kFinFloorAtLeast = 0.3;
+// The floor beside a low sunlit fin that the camera sees from its dark side: measured 0.07x the
+// path tracer's when the near field's ray took a surface met from its hidden side as black, 0.49x
+// with that side's light from the voxels, 0.74x since grazing cones start lower (a metre away only
+// they see the fin, which is lower than the cones' start offset).
+constexpr double kFinFloorAtLeast = 0.55;
 // Bounces 2 and 3 in a room lit through an opening (issue 13's 0.85..1.15 for a whole image):
 // measured 0.94 with one narrow cone per voxel side (the default), 1.00 with two, 0.64 with the
 // cone set.
@@ -315,9 +316,11 @@ TEST(GiAccuracy, AGalleryGetsTheLightOfASunlitFloorItSeesAtAGrazingAngle) {
 
 TEST(GiAccuracy, TheNearFieldSeesTheLitSideOfAFinTheCameraSeesFromBehind) {
     // A fin two voxels tall stands on a floor, lit by the sun on the side facing away from the
-    // camera, which looks down over it at the floor beyond. That floor's light off the fin comes
-    // from within the cones' start offset: the near field's rays meet the fin from its lit side,
-    // which the G-buffer does not hold (it holds the dark side): its light comes from the voxels.
+    // camera, which looks down over it at the floor beyond. Near the fin that floor's light off it
+    // comes from within the cones' start offset: the near field's rays meet the fin from its lit
+    // side, which the G-buffer does not hold (it holds the dark side): its light comes from the
+    // voxels. Further away the cones that leave the floor at a grazing angle must start low
+    // enough not to pass over the fin.
     const auto dir = test::testDir();
     test::ObjWriter model;
     model.material("floor", glm::vec3(0.5f));
