@@ -14,10 +14,10 @@
 # light_sources_<renderer>_sun_<X>_<Y>_<Z>.md.
 source "$(dirname "$0")/scratch_setup.sh"
 spp=256
-sun=()
+scene=(--scene sponza)
 suffix=""
 if [ $# -gt 0 ]; then
-  sun=(--sun-dir "$1" --sun-irradiance 10)
+  scene+=(--sun-dir "$1" --sun-irradiance 10)
   suffix="_sun_${1//,/_}"
 fi
 views=(CameraMain CameraAlternate CameraBalcony CameraAlcove)
@@ -29,13 +29,13 @@ for view in "${views[@]}"; do
     dark=()
     [ "$index" -ge 0 ] && dark=(--dark-material "${materials[$index]}")
     echo "light sources: $view, ${dark[*]:-all materials}..." >&2
-    ./build/vct -q reference --scene sponza ${sun[@]+"${sun[@]}"} --camera "$view" "${size[@]}" "${dark[@]}" --spp $spp --bounces 1 \
+    ./build/vct -q reference "${scene[@]}" --camera "$view" "${size[@]}" "${dark[@]}" --spp $spp --bounces 1 \
       --out "$work/r.pfm" --indirect-out "$work/$view$index-reference.pfm"
-    ./build/vct -q render --scene sponza ${sun[@]+"${sun[@]}"} --camera "$view" "${size[@]}" "${dark[@]}" --aov gi \
+    ./build/vct -q render "${scene[@]}" --camera "$view" "${size[@]}" "${dark[@]}" --aov gi \
       --hdr-out "$work/$view$index-engine.pfm" --out "$work/e.png" --timings "$work/timings.json"
-    ./build/vct -q render --scene sponza ${sun[@]+"${sun[@]}"} --camera "$view" "${size[@]}" "${dark[@]}" "${narrow[@]}" --aov gi \
+    ./build/vct -q render "${scene[@]}" --camera "$view" "${size[@]}" "${dark[@]}" "${narrow[@]}" --aov gi \
       --hdr-out "$work/$view$index-narrow.pfm" --out "$work/e.png"
-    ./build/vct -q render --scene sponza ${sun[@]+"${sun[@]}"} --camera "$view" "${size[@]}" "${dark[@]}" --aov albedo \
+    ./build/vct -q render "${scene[@]}" --camera "$view" "${size[@]}" "${dark[@]}" --aov albedo \
       --hdr-out "$work/$view$index-albedo.pfm" --out "$work/e.png"
   done
 done

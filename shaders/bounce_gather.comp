@@ -43,8 +43,9 @@ layout(std430, binding = SSBO_BOUNCE_LIST) buffer BounceList { uint ownGatherCel
 // end) and take its irradiance in the fourth (SHARE_WITH_SECOND). Listing them first keeps every
 // invocation of a gather busy: scattered among cells that only copy, each would hold up its whole
 // SIMD group.
-// Siblings lie within a voxel of each other and cones start 2 voxels off their centre, so a
-// shared gather differs from the cell's own by far less than the cones' own blur.
+// Siblings lie within a voxel of each other and cones start 2 voxels off their centre (grazing
+// ones at least two thirds of that: cone_march.glsl, grazingConeStart), so a shared gather
+// differs from the cell's own by far less than the cones' own blur.
 const float kShareCosine = 0.9;
 
 

@@ -538,9 +538,7 @@ bool hiddenSideLight(vec3 point, vec3 normal, vec3 direction, float length, out 
         if (any(lessThan(p, vec3(0.0))) || any(greaterThanEqual(p, vec3(float(1 << uLevels))))) return false;
         const uvec3 cell = uvec3(floor(p));
         if (all(equal(cell, own))) continue;
-        uint voxel = 0u;
-        for (int level = 1; level <= uLevels && voxel != NONE; ++level)
-            voxel = childOf(voxel, childSlot(cell >> uint(uLevels - level)));
+        const uint voxel = findNode(cell, uLevels);
         if (voxel == NONE) continue;
         const uint index = voxel - uLevelStart[uLevels];
         vec3 place;
